@@ -1,0 +1,34 @@
+import type { Dims } from '@physin/algebra';
+
+/** The kinds of shape the engine knows. */
+export type ShapeKind = 'box' | 'sphere' | 'halfspace' | 'torus' | 'mesh';
+
+/**
+ * Mass properties of a shape for a given mass, in the shape's own (principal) frame.
+ *
+ * Every shape is stored so that its centre of mass is at the local origin and its covariance
+ * is diagonal: the inertia operator is then diagonal too, I_(ij) = C_ii + C_jj.
+ */
+export interface MassProperties {
+  /** The n-volume of the shape (m^n). */
+  readonly volume: number;
+  /** The diagonal of the mass-weighted covariance C = ∫ x xᵀ dm about the centre of mass (n numbers, kg·m²). */
+  readonly covariance: Float64Array;
+  /** The diagonal inertia in the principal frame, k numbers (kg·m²): I_(ij) = C_ii + C_jj. */
+  readonly inertia: Float64Array;
+}
+
+/**
+ * A collision and mass shape. A shape is immutable once built and may be shared by bodies.
+ *
+ * `n` is the count of dimensions the shape was built for, or `null` for a shape that works in
+ * any n (the ball), which takes the count of the world it is added to.
+ */
+export interface Shape {
+  /** Which kind of shape this is. */
+  readonly kind: ShapeKind;
+  /** The count of dimensions, or null for a shape that fits any n (a ball). */
+  readonly n: number | null;
+  /** Mass properties of this shape in `D`'s dimension for a total mass `mass` (kg, > 0). */
+  massProperties(D: Dims, mass: number): MassProperties;
+}

@@ -1,0 +1,20 @@
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vitest/config';
+
+const src = (p: string) => fileURLToPath(new URL(p, import.meta.url));
+
+// Unit tests run against the TypeScript sources (fast feedback, exact stack traces);
+// tests/node-import.test.ts checks the built packages through their `exports` as a user would.
+export default defineConfig({
+  resolve: {
+    alias: {
+      '@physin/algebra': src('./packages/algebra/src/index.ts'),
+      '@physin/engine': src('./packages/engine/src/index.ts'),
+    },
+  },
+  test: {
+    include: ['tests/**/*.test.ts', 'packages/*/test/**/*.test.ts'],
+    testTimeout: 120_000,
+    hookTimeout: 120_000,
+  },
+});

@@ -29,6 +29,18 @@ export interface Shape {
   readonly kind: ShapeKind;
   /** The count of dimensions, or null for a shape that fits any n (a ball). */
   readonly n: number | null;
+  /**
+   * Where the shape's own (principal) frame sits in the coordinates the shape was described in,
+   * for shapes that were moved into a principal frame when built (convex meshes): the centre of
+   * mass there (n numbers, m). A body placed at x with rotor R in the described coordinates puts
+   * the shape at x + R·frameOffset. Absent: the frames coincide.
+   */
+  readonly frameOffset?: Float64Array;
+  /**
+   * The rotor (r numbers) taking the shape's own frame to the coordinates it was described in;
+   * a body with rotor R uses R·frameRotor (first frameRotor, then R). Absent: identity.
+   */
+  readonly frameRotor?: Float64Array;
   /** Mass properties of this shape in `D`'s dimension for a total mass `mass` (kg, > 0). */
   massProperties(D: Dims, mass: number): MassProperties;
 }

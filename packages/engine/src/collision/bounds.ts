@@ -1,0 +1,157 @@
+/**
+ * World-space axis-aligned bounding boxes of posed shapes, in n dimensions.
+ *
+ * Each bound is exact (the smallest axis-aligned box of the posed solid) before the margin is
+ * added: along world axis k the box reaches the shape's support point in direction ±e_k.
+ */
+import { checkDimension, checkNumber, checkOutput, checkPose, checkShape } from './query-checks.js';
+import type { QueryShape } from './query-shapes.js';
+
+/**
+ * Writes the world bounding box of `shape` placed at pose (x, M), grown by `margin` on every
+ * side, into outMin/outMax (n numbers each, m). Validates every argument first.
+ *
+ * - box, half extents a: extent along world axis k is Σ_c |M[k][c]| a_c;
+ * - sphere, radius ρ: ρ on every axis;
+ * - torus (core circle radius R in local plane (i, j), tube radius r): R·√(M[k][i]² + M[k][j]²) + r,
+ *   the exact extent of the solid torus (the circle's extent plus the ball's);
+ * - convex mesh: min and max over its vertices;
+ * - half-space: infinite (−∞, +∞) on every axis, except that a plane whose world normal is
+ *   exactly a coordinate axis bounds that one axis on its solid side. The broadphase keeps
+ *   half-spaces aside and never puts them in its tree.
+ *
+ * @param outMin receives the lower corner (n numbers).
+ * @param outMax receives the upper corner (n numbers).
+ * @param n count of dimensions (2..8).
+ * @param shape the shape's geometry in its local frame.
+ * @param x world position of the local origin (n numbers).
+ * @param M world rotation, n*n row-major (`M[i*n + c]` = component i of local axis c).
+ * @param margin extra room added on every side (m, >= 0).
+ * @returns outMin.
+ */
+export function computeBounds(
+  outMin: Float64Array,
+  outMax: Float64Array,
+  n: number,
+  shape: QueryShape,
+  x: ArrayLike<number>,
+  M: ArrayLike<number>,
+  margin: number,
+): Float64Array {
+  checkDimension(n);
+  checkOutput(outMin, n, 'outMin');
+  checkOutput(outMax, n, 'outMax');
+  checkShape(shape, n);
+  checkPose(n, x, M);
+  checkNumber(margin, 'margin', 0);
+  return computeBoundsUnchecked(outMin, outMax, n, shape, x, M, margin);
+}
+
+/**
+ * {@link computeBounds} without any argument check: the engine's per-step kernel for data it
+ * validated when the body entered the world. Allocates nothing.
+ */
+export function computeBoundsUnchecked(
+  outMin: Float64Array,
+  outMax: Float64Array,
+  n: number,
+  shape: QueryShape,
+  x: ArrayLike<number>,
+  M: ArrayLike<number>,
+  margin: number,
+): Float64Array {
+  switch (shape.kind) {
+    case 'box': {
+      const a = shape.halfExtents;
+      for (let k = 0; k < n; k += 1) {
+        let e = 0;
+        const row = k * n;
+        for (let c = 0; c < n; c += 1) e += Math.abs(M[row + c]!) * a[c]!;
+        e += margin;
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    case 'sphere': {
+      const e = shape.radius + margin;
+      for (let k = 0; k < n; k += 1) {
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    case 'torus': {
+      const R = shape.majorRadius;
+      const r = shape.minorRadius;
+      const pi = shape.planeI;
+      const pj = shape.planeJ;
+      for (let k = 0; k < n; k += 1) {
+        const u = M[k * n + pi]!;
+        const v = M[k * n + pj]!;
+        // The core circle's extent along e_k is R times the length of e_k projected on its plane.
+        const e = R * Math.sqrt(u * u + v * v) + r + margin;
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    case 'mesh': {
+      const vs = shape.vertices;
+      const count = vs.length / n;
+      for (let k = 0; k < n; k += 1) {
+        let lo = Infinity;
+        let hi = -Infinity;
+        const row = k * n;
+        for (let v = 0; v < count; v += 1) {
+          let w = 0;
+          const base = v * n;
+          for (let c = 0; c < n; c += 1) w += M[row + c]! * vs[base + c]!;
+          if (w < lo) lo = w;
+          if (w > hi) hi = w;
+        }
+        outMin[k] = x[k]! + lo - margin;
+        outMax[k] = x[k]! + hi + margin;
+      }
+      return outMin;
+    }
+    case 'halfspace': {
+      halfSpaceBounds(outMin, outMax, n, shape.normal, shape.offset, x, M, margin);
+      return outMin;
+    }
+  }
+}
+
+/** Bounds of a posed half-space: infinite except along an axis its world normal is exactly. */
+function halfSpaceBounds(
+  outMin: Float64Array,
+  outMax: Float64Array,
+  n: number,
+  normal: ArrayLike<number>,
+  offset: number,
+  x: ArrayLike<number>,
+  M: ArrayLike<number>,
+  margin: number,
+): void {
+  let axis = -1;
+  let nonzero = 0;
+  let wk = 0;
+  let wDotX = 0;
+  for (let k = 0; k < n; k += 1) {
+    outMin[k] = -Infinity;
+    outMax[k] = Infinity;
+    let w = 0;
+    for (let c = 0; c < n; c += 1) w += M[k * n + c]! * normal[c]!;
+    wDotX += w * x[k]!;
+    if (w !== 0) {
+      nonzero += 1;
+      axis = k;
+      wk = w;
+    }
+  }
+  if (nonzero !== 1) return;
+  // World plane: w·p <= offset + w·x with w = wk e_axis, so p_axis is bounded on one side.
+  const limit = (offset + wDotX) / wk;
+  if (wk > 0) outMax[axis] = limit + margin;
+  else outMin[axis] = limit - margin;
+}

@@ -1,0 +1,498 @@
+/**
+ * A dynamic bounding-volume tree of axis-aligned boxes in n dimensions.
+ *
+ * Leaves hold the boxes of user items; every inner node holds the union of its two children.
+ * Insertion descends by the surface-area heuristic generalised to n dimensions (the box's
+ * surface measure, {@link surfaceMeasure}) and the tree is kept balanced with AVL rotations, after
+ * Box2D's b2DynamicTree. Storage is struct-of-arrays in typed arrays that grow by doubling, so
+ * insert/remove/query allocate nothing once the tree has reached its size.
+ *
+ * This is an internal kernel of the broadphase: it does not validate its arguments.
+ */
+
+const NULL = -1;
+
+/**
+ * The (n−1)-dimensional measure of the boundary of a box with extents e: 2·Σ_k Π_{j≠k} e_j
+ * (2D: the perimeter; 3D: the surface area). The cost the insertion heuristic minimises.
+ */
+export function surfaceMeasure(extents: ArrayLike<number>, n: number): number {
+  let sum = 0;
+  for (let k = 0; k < n; k += 1) {
+    let p = 1;
+    for (let j = 0; j < n; j += 1) if (j !== k) p *= extents[j]!;
+    sum += p;
+  }
+  return 2 * sum;
+}
+
+/** A dynamic AABB tree over n-dimensional boxes; leaves carry an integer user id. */
+export class DynamicAabbTree {
+  /** Count of dimensions. */
+  readonly n: number;
+  /** Root node index, or −1 when the tree is empty. */
+  root = NULL;
+  /** Lower corners of the node boxes, flat: node i is [i*n, i*n + n). */
+  nodeMin: Float64Array;
+  /** Upper corners of the node boxes, flat like {@link nodeMin}. */
+  nodeMax: Float64Array;
+  /** Parent of each node (−1 for the root); on free nodes, the next free node. */
+  parent: Int32Array;
+  /** First child of each inner node. */
+  child1: Int32Array;
+  /** Second child of each inner node. */
+  child2: Int32Array;
+  /** Leaf: 0; inner node: 1 + max(children's heights); free node: −1. */
+  height: Int32Array;
+  /** User id of a leaf (−1 on inner nodes). */
+  userId: Int32Array;
+  /** Node boxes tested by the last query or ray cast (the work it did). */
+  nodesVisited = 0;
+  /** Result list of {@link query}: user ids of the leaves found, [0, hitCount). */
+  hits: Int32Array;
+  /** Count of ids in {@link hits}. */
+  hitCount = 0;
+
+  private capacity: number;
+  private freeList = NULL;
+  private nodeCount = 0;
+  private stack: Int32Array;
+  private readonly prefix: Float64Array;
+  private readonly extents: Float64Array;
+  private readonly measure = new Float64Array(6);
+
+  /** An empty tree for n dimensions with room for `initialCapacity` nodes (it grows by doubling). */
+  constructor(n: number, initialCapacity = 16) {
+    this.n = n;
+    this.capacity = Math.max(2, initialCapacity);
+    const c = this.capacity;
+    this.nodeMin = new Float64Array(c * n);
+    this.nodeMax = new Float64Array(c * n);
+    this.parent = new Int32Array(c);
+    this.child1 = new Int32Array(c);
+    this.child2 = new Int32Array(c);
+    this.height = new Int32Array(c);
+    this.userId = new Int32Array(c);
+    this.linkFree(0, c);
+    this.hits = new Int32Array(16);
+    this.stack = new Int32Array(64);
+    this.prefix = new Float64Array(n);
+    this.extents = new Float64Array(n);
+  }
+
+  /** Count of nodes in use (leaves and inner nodes). */
+  get size(): number {
+    return this.nodeCount;
+  }
+
+  /** Height of the tree (0 for a single leaf, −1 when empty). */
+  get treeHeight(): number {
+    return this.root === NULL ? -1 : this.height[this.root]!;
+  }
+
+  /**
+   * Inserts a leaf for `user` with box [min, max) read from `min[off .. off+n)` and
+   * `max[off .. off+n)`. Returns the leaf's node index.
+   */
+  insert(user: number, min: Float64Array, max: Float64Array, off: number): number {
+    const leaf = this.allocateNode();
+    const n = this.n;
+    const b = leaf * n;
+    for (let k = 0; k < n; k += 1) {
+      this.nodeMin[b + k] = min[off + k]!;
+      this.nodeMax[b + k] = max[off + k]!;
+    }
+    this.userId[leaf] = user;
+    this.height[leaf] = 0;
+    this.insertLeaf(leaf);
+    return leaf;
+  }
+
+  /** Removes a leaf and frees its node. */
+  remove(leaf: number): void {
+    this.removeLeaf(leaf);
+    this.freeNode(leaf);
+  }
+
+  /** Gives a leaf a new box (remove and reinsert: the path to the root is refitted). */
+  update(leaf: number, min: Float64Array, max: Float64Array, off: number): void {
+    this.removeLeaf(leaf);
+    const n = this.n;
+    const b = leaf * n;
+    for (let k = 0; k < n; k += 1) {
+      this.nodeMin[b + k] = min[off + k]!;
+      this.nodeMax[b + k] = max[off + k]!;
+    }
+    this.insertLeaf(leaf);
+  }
+
+  /**
+   * Finds every leaf whose box overlaps [min, max] (closed intervals on every axis) and writes
+   * their user ids into {@link hits}[0 .. hitCount). Returns hitCount.
+   */
+  query(min: Float64Array, max: Float64Array, off: number): number {
+    this.hitCount = 0;
+    this.nodesVisited = 0;
+    if (this.root === NULL) return 0;
+    const n = this.n;
+    const nodeMin = this.nodeMin;
+    const nodeMax = this.nodeMax;
+    let top = 0;
+    this.stack[top++] = this.root;
+    while (top > 0) {
+      const node = this.stack[--top]!;
+      this.nodesVisited += 1;
+      const b = node * n;
+      let overlap = true;
+      for (let k = 0; k < n; k += 1) {
+        if (nodeMin[b + k]! > max[off + k]! || min[off + k]! > nodeMax[b + k]!) {
+          overlap = false;
+          break;
+        }
+      }
+      if (!overlap) continue;
+      if (this.height[node] === 0) {
+        if (this.hitCount === this.hits.length) this.hits = grow(this.hits, this.hitCount);
+        this.hits[this.hitCount++] = this.userId[node]!;
+      } else {
+        if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
+        this.stack[top++] = this.child1[node]!;
+        this.stack[top++] = this.child2[node]!;
+      }
+    }
+    return this.hitCount;
+  }
+
+  /**
+   * Walks the leaves whose box the ray o + t·d meets for t in [0, limit], shrinking the limit
+   * as hits come in: `cast(user, limit)` returns the distance of its own hit (>= 0, used as the
+   * new limit) or a negative number for none. Returns the smallest hit distance, or −1.
+   */
+  rayCast(
+    o: ArrayLike<number>,
+    d: ArrayLike<number>,
+    maxDistance: number,
+    cast: (user: number, limit: number) => number,
+  ): number {
+    this.nodesVisited = 0;
+    if (this.root === NULL) return -1;
+    const n = this.n;
+    let limit = maxDistance;
+    let best = -1;
+    let top = 0;
+    this.stack[top++] = this.root;
+    while (top > 0) {
+      const node = this.stack[--top]!;
+      this.nodesVisited += 1;
+      if (!rayHitsBox(n, o, d, limit, this.nodeMin, this.nodeMax, node * n)) continue;
+      if (this.height[node] === 0) {
+        const t = cast(this.userId[node]!, limit);
+        if (t >= 0 && t <= limit) {
+          limit = t;
+          best = t;
+        }
+      } else {
+        if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
+        this.stack[top++] = this.child1[node]!;
+        this.stack[top++] = this.child2[node]!;
+      }
+    }
+    return best;
+  }
+
+  /** Checks the tree's invariants (parents, heights, boxes containing children); for tests. */
+  validate(): string | null {
+    if (this.root === NULL) return null;
+    if (this.parent[this.root] !== NULL) return 'root has a parent';
+    const n = this.n;
+    let count = 0;
+    let top = 0;
+    this.stack[top++] = this.root;
+    while (top > 0) {
+      const node = this.stack[--top]!;
+      count += 1;
+      if (this.height[node] === 0) continue;
+      const c1 = this.child1[node]!;
+      const c2 = this.child2[node]!;
+      if (this.parent[c1] !== node || this.parent[c2] !== node) return `bad parent link at ${node}`;
+      const h = 1 + Math.max(this.height[c1]!, this.height[c2]!);
+      if (this.height[node] !== h) return `bad height at ${node}`;
+      for (let k = 0; k < n; k += 1) {
+        const lo = Math.min(this.nodeMin[c1 * n + k]!, this.nodeMin[c2 * n + k]!);
+        const hi = Math.max(this.nodeMax[c1 * n + k]!, this.nodeMax[c2 * n + k]!);
+        if (this.nodeMin[node * n + k] !== lo || this.nodeMax[node * n + k] !== hi) {
+          return `box of ${node} is not the union of its children`;
+        }
+      }
+      if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
+      this.stack[top++] = c1;
+      this.stack[top++] = c2;
+    }
+    if (count !== this.nodeCount) return `reachable ${count} != allocated ${this.nodeCount}`;
+    return null;
+  }
+
+  private linkFree(from: number, to: number): void {
+    for (let i = from; i < to - 1; i += 1) {
+      this.parent[i] = i + 1;
+      this.height[i] = -1;
+    }
+    this.parent[to - 1] = this.freeList;
+    this.height[to - 1] = -1;
+    this.freeList = from;
+  }
+
+  private allocateNode(): number {
+    if (this.freeList === NULL) this.growNodes();
+    const node = this.freeList;
+    this.freeList = this.parent[node]!;
+    this.parent[node] = NULL;
+    this.child1[node] = NULL;
+    this.child2[node] = NULL;
+    this.height[node] = 0;
+    this.userId[node] = NULL;
+    this.nodeCount += 1;
+    return node;
+  }
+
+  private freeNode(node: number): void {
+    this.parent[node] = this.freeList;
+    this.height[node] = -1;
+    this.freeList = node;
+    this.nodeCount -= 1;
+  }
+
+  private growNodes(): void {
+    const old = this.capacity;
+    const c = old * 2;
+    const n = this.n;
+    this.nodeMin = resizeF64(this.nodeMin, c * n);
+    this.nodeMax = resizeF64(this.nodeMax, c * n);
+    this.parent = resizeI32(this.parent, c);
+    this.child1 = resizeI32(this.child1, c);
+    this.child2 = resizeI32(this.child2, c);
+    this.height = resizeI32(this.height, c);
+    this.userId = resizeI32(this.userId, c);
+    this.capacity = c;
+    this.linkFree(old, c);
+  }
+
+  /**
+   * Surface measure of the union of the boxes of nodes a and b (b = −1: a alone), written to
+   * measure[slot]. Results go through a typed array, not a return value: a returned double is
+   * boxed on the heap when the call is not inlined, and insertion makes many of these calls.
+   */
+  private measureInto(slot: number, a: number, b: number): void {
+    const n = this.n;
+    const e = this.extents;
+    const lo = this.nodeMin;
+    const hi = this.nodeMax;
+    if (b < 0) {
+      for (let k = 0; k < n; k += 1) e[k] = hi[a * n + k]! - lo[a * n + k]!;
+    } else {
+      for (let k = 0; k < n; k += 1) {
+        e[k] = Math.max(hi[a * n + k]!, hi[b * n + k]!) - Math.min(lo[a * n + k]!, lo[b * n + k]!);
+      }
+    }
+    // 2·Σ_k Π_{j≠k} e_j in O(n) with prefix and suffix products (exact with zero extents).
+    const pre = this.prefix;
+    let p = 1;
+    for (let k = 0; k < n; k += 1) {
+      pre[k] = p;
+      p *= e[k]!;
+    }
+    let suffix = 1;
+    let sum = 0;
+    for (let k = n - 1; k >= 0; k -= 1) {
+      sum += pre[k]! * suffix;
+      suffix *= e[k]!;
+    }
+    this.measure[slot] = 2 * sum;
+  }
+
+  private setUnion(node: number, a: number, b: number): void {
+    const n = this.n;
+    for (let k = 0; k < n; k += 1) {
+      this.nodeMin[node * n + k] = Math.min(this.nodeMin[a * n + k]!, this.nodeMin[b * n + k]!);
+      this.nodeMax[node * n + k] = Math.max(this.nodeMax[a * n + k]!, this.nodeMax[b * n + k]!);
+    }
+  }
+
+  private insertLeaf(leaf: number): void {
+    if (this.root === NULL) {
+      this.root = leaf;
+      this.parent[leaf] = NULL;
+      return;
+    }
+    // Descend toward the sibling that grows the total surface measure the least.
+    let index = this.root;
+    const m = this.measure;
+    while (this.height[index] !== 0) {
+      const c1 = this.child1[index]!;
+      const c2 = this.child2[index]!;
+      this.measureInto(0, index, -1);
+      this.measureInto(1, index, leaf);
+      this.measureInto(2, leaf, c1);
+      this.measureInto(3, leaf, c2);
+      if (this.height[c1] !== 0) this.measureInto(4, c1, -1);
+      else m[4] = 0;
+      if (this.height[c2] !== 0) this.measureInto(5, c2, -1);
+      else m[5] = 0;
+      const cost = 2 * m[1]!;
+      const inheritance = 2 * (m[1]! - m[0]!);
+      const cost1 = m[2]! - m[4]! + inheritance;
+      const cost2 = m[3]! - m[5]! + inheritance;
+      if (cost < cost1 && cost < cost2) break;
+      index = cost1 < cost2 ? c1 : c2;
+    }
+    const sibling = index;
+    const oldParent = this.parent[sibling]!;
+    const newParent = this.allocateNode();
+    this.parent[newParent] = oldParent;
+    this.setUnion(newParent, leaf, sibling);
+    this.height[newParent] = this.height[sibling]! + 1;
+    if (oldParent !== NULL) {
+      if (this.child1[oldParent] === sibling) this.child1[oldParent] = newParent;
+      else this.child2[oldParent] = newParent;
+    } else {
+      this.root = newParent;
+    }
+    this.child1[newParent] = sibling;
+    this.child2[newParent] = leaf;
+    this.parent[sibling] = newParent;
+    this.parent[leaf] = newParent;
+    this.refitUpward(this.parent[leaf]!);
+  }
+
+  private removeLeaf(leaf: number): void {
+    if (leaf === this.root) {
+      this.root = NULL;
+      return;
+    }
+    const parent = this.parent[leaf]!;
+    const grandParent = this.parent[parent]!;
+    const sibling = this.child1[parent] === leaf ? this.child2[parent]! : this.child1[parent]!;
+    if (grandParent !== NULL) {
+      if (this.child1[grandParent] === parent) this.child1[grandParent] = sibling;
+      else this.child2[grandParent] = sibling;
+      this.parent[sibling] = grandParent;
+      this.freeNode(parent);
+      this.refitUpward(grandParent);
+    } else {
+      this.root = sibling;
+      this.parent[sibling] = NULL;
+      this.freeNode(parent);
+    }
+  }
+
+  /** Rebalances and refits every node from `index` to the root. */
+  private refitUpward(start: number): void {
+    let index = start;
+    while (index !== NULL) {
+      index = this.balance(index);
+      const c1 = this.child1[index]!;
+      const c2 = this.child2[index]!;
+      this.height[index] = 1 + Math.max(this.height[c1]!, this.height[c2]!);
+      this.setUnion(index, c1, c2);
+      index = this.parent[index]!;
+    }
+  }
+
+  /** One AVL rotation at node a if its children's heights differ by more than 1. */
+  private balance(iA: number): number {
+    if (this.height[iA] === 0 || this.height[iA]! < 2) return iA;
+    const iB = this.child1[iA]!;
+    const iC = this.child2[iA]!;
+    const diff = this.height[iC]! - this.height[iB]!;
+    if (diff > 1) return this.rotateUp(iA, iC, iB, true);
+    if (diff < -1) return this.rotateUp(iA, iB, iC, false);
+    return iA;
+  }
+
+  /**
+   * Lifts the taller child `up` of `a` into a's place. `other` is a's other child, `upIsChild2`
+   * says which slot `up` occupied. The lower of up's children moves under a.
+   */
+  private rotateUp(iA: number, up: number, other: number, upIsChild2: boolean): number {
+    const iF = this.child1[up]!;
+    const iG = this.child2[up]!;
+    this.child1[up] = iA;
+    this.parent[up] = this.parent[iA]!;
+    this.parent[iA] = up;
+    const p = this.parent[up]!;
+    if (p !== NULL) {
+      if (this.child1[p] === iA) this.child1[p] = up;
+      else this.child2[p] = up;
+    } else {
+      this.root = up;
+    }
+    // Keep the taller grandchild under `up`, give the shorter one to a.
+    const keep = this.height[iF]! > this.height[iG]! ? iF : iG;
+    const give = keep === iF ? iG : iF;
+    this.child2[up] = keep;
+    if (upIsChild2) this.child2[iA] = give;
+    else this.child1[iA] = give;
+    this.parent[give] = iA;
+    this.setUnion(iA, other, give);
+    this.setUnion(up, iA, keep);
+    this.height[iA] = 1 + Math.max(this.height[other]!, this.height[give]!);
+    this.height[up] = 1 + Math.max(this.height[iA]!, this.height[keep]!);
+    return up;
+  }
+}
+
+/**
+ * Slab test: does the ray o + t·d, t in [0, limit], meet the box at `base` of (boxMin, boxMax)?
+ * Closed intervals; an axis with d = 0 needs o inside the slab.
+ */
+export function rayHitsBox(
+  n: number,
+  o: ArrayLike<number>,
+  d: ArrayLike<number>,
+  limit: number,
+  boxMin: Float64Array,
+  boxMax: Float64Array,
+  base: number,
+): boolean {
+  let t0 = 0;
+  let t1 = limit;
+  for (let k = 0; k < n; k += 1) {
+    const dk = d[k]!;
+    const ok = o[k]!;
+    const lo = boxMin[base + k]!;
+    const hi = boxMax[base + k]!;
+    if (dk === 0) {
+      if (ok < lo || ok > hi) return false;
+      continue;
+    }
+    let a = (lo - ok) / dk;
+    let b = (hi - ok) / dk;
+    if (a > b) {
+      const s = a;
+      a = b;
+      b = s;
+    }
+    if (a > t0) t0 = a;
+    if (b < t1) t1 = b;
+    if (t0 > t1) return false;
+  }
+  return true;
+}
+
+function grow(a: Int32Array, used: number): Int32Array {
+  const b = new Int32Array(a.length * 2);
+  b.set(a.subarray(0, used));
+  return b;
+}
+
+function resizeF64(a: Float64Array, length: number): Float64Array {
+  const b = new Float64Array(length);
+  b.set(a);
+  return b;
+}
+
+function resizeI32(a: Int32Array, length: number): Int32Array {
+  const b = new Int32Array(length);
+  b.set(a);
+  return b;
+}

@@ -18,6 +18,8 @@
  * A rotor acts by x' = R x R~; first R1 then R2 is R2 R1.
  */
 export interface RotorKernels {
+  /** Which implementation this is (e.g. 'generic', 'fast3', 'fast4'): for tests, benchmarks and logs only. */
+  readonly name?: string;
   /** out = a b (geometric product of two even elements). `out` may alias `a` or `b`. */
   mul(out: Float64Array, a: Float64Array, b: Float64Array): Float64Array;
   /** out = R v R~ for a vector v. `out` may alias `v`. */

@@ -1,0 +1,34 @@
+/**
+ * The examples site: a multi-page Vite app rooted at examples/. Every page is a folder with an
+ * index.html, registered in pages.ts; this file turns that list into build entries.
+ *
+ * @physin/* resolve through their package `exports` to the built dist/ files, as for any user of
+ * the library (`npm start` builds them first).
+ */
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vite';
+import { pages } from './pages.js';
+
+const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
+
+const input: Record<string, string> = { index: here('./index.html') };
+for (const page of pages) input[page.dir] = here(`./${page.dir}/index.html`);
+
+export default defineConfig({
+  root: here('.'),
+  base: './',
+  build: {
+    outDir: here('./dist'),
+    emptyOutDir: true,
+    target: 'es2022',
+    rolldownOptions: {
+      input,
+      // three.js gets a chunk of its own, shared (and cached) by every page that draws.
+      output: { codeSplitting: { groups: [{ name: 'three', test: /[\\/]node_modules[\\/].*three[\\/]/ }] } },
+    },
+    // That chunk alone is about 570 kB minified (145 kB gzipped); it cannot be split further.
+    chunkSizeWarningLimit: 700,
+  },
+  server: { host: '127.0.0.1', port: 5173, strictPort: true },
+  preview: { host: '127.0.0.1', port: 5173, strictPort: true },
+});

@@ -2,6 +2,7 @@ import type { Dims } from '@physin/algebra';
 import { checkDims, checkVector } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
+import { boxColliders } from '../collision/box-colliders.js';
 
 /**
  * A solid n-dimensional box centred on its local origin with its edges along the local axes:
@@ -37,6 +38,8 @@ export function HyperBox(D: Dims, halfExtents: ArrayLike<number>): BoxShape {
     unitCovariance[i] = (a[i] * a[i]) / 3;
   }
   return Object.freeze({
+    // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
+    colliders: boxColliders,
     kind: 'box' as const,
     n,
     halfExtents: a,

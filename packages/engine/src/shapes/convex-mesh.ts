@@ -9,6 +9,7 @@ import { principalFrame } from './principal-frame.js';
 import type { MassProperties, Shape } from './shape.js';
 import { mergeTriangles } from './triangle-merge.js';
 import type { TriangleMergeOptions } from './triangle-merge.js';
+import { meshColliders } from '../collision/mesh-colliders.js';
 
 /**
  * Default relative tolerance of the convex mesh checks, as a fraction of the mesh size (the
@@ -313,6 +314,8 @@ function buildConvexMesh(
   }
 
   return Object.freeze({
+    // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
+    colliders: meshColliders,
     kind: 'mesh' as const,
     n,
     vertices: local,

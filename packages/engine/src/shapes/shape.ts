@@ -1,4 +1,5 @@
 import type { Dims } from '@physin/algebra';
+import type { ColliderTable } from '../collision/manifold.js';
 
 /** The kinds of shape the engine knows. */
 export type ShapeKind = 'box' | 'sphere' | 'halfspace' | 'torus' | 'mesh';
@@ -43,4 +44,10 @@ export interface Shape {
   readonly frameRotor?: Float64Array;
   /** Mass properties of this shape in `D`'s dimension for a total mass `mass` (kg, > 0). */
   massProperties(D: Dims, mass: number): MassProperties;
+  /**
+   * The narrowphase pair colliders this shape's kind owns, keyed by the other shape's kind (see
+   * collision/manifold.ts, ColliderTable). Absent: the kind owns no pair (a half-space: its pairs
+   * live in the other shapes' tables).
+   */
+  readonly colliders?: ColliderTable;
 }

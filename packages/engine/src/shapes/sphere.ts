@@ -3,6 +3,7 @@ import { ballVolume } from './ball-volume.js';
 import { checkPositive } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
+import { sphereColliders } from '../collision/sphere-colliders.js';
 
 /**
  * A solid ball centred on its local origin. It has no count of dimensions of its own (`n` is
@@ -27,6 +28,8 @@ export interface SphereShape extends Shape {
 export function HyperSphere(radius: number): SphereShape {
   const rho = checkPositive('HyperSphere', radius, 'radius');
   return Object.freeze({
+    // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
+    colliders: sphereColliders,
     kind: 'sphere' as const,
     n: null,
     radius: rho,

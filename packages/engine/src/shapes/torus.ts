@@ -3,6 +3,7 @@ import { ballVolume } from './ball-volume.js';
 import { checkDims, checkIndex, checkPositive, isNumberList } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
+import { torusColliders } from '../collision/torus-colliders.js';
 
 /**
  * A solid n-torus centred on its local origin: the points at distance <= `minorRadius` from the
@@ -78,6 +79,8 @@ export function HyperTorus(
   unitCovariance[planeI] = inPlane;
   unitCovariance[planeJ] = inPlane;
   return Object.freeze({
+    // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
+    colliders: torusColliders,
     kind: 'torus' as const,
     n,
     majorRadius: R,

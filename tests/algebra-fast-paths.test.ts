@@ -7,14 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { createFast3Kernels } from '../packages/algebra/src/kernels/fast3.js';
 import { createFast4Kernels } from '../packages/algebra/src/kernels/fast4.js';
 import { randomArray, seeded, uniform } from './support/random.js';
-
-/** Largest absolute componentwise difference. */
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
+import { maxDiff } from './support/compare.js';
 
 function reverse(n: number, R: Float64Array): Float64Array {
   const D = dims(n);

@@ -13,13 +13,7 @@ import {
 } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import { randomArray, seeded } from './support/random.js';
-
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
+import { maxDiff } from './support/compare.js';
 
 /** The exact matrix of a turn by θ in plane (i, j): e_i → cos θ e_i + sin θ e_j. */
 function planeMatrix(n: number, i: number, j: number, theta: number): Float64Array {

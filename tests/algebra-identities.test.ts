@@ -29,36 +29,9 @@ import {
   wedge,
   wedgeMatrix,
 } from '@physin/algebra';
-import type { Dims } from '@physin/algebra';
 import { randomArray, seeded, uniform } from './support/random.js';
-
-/** Largest absolute entry of a − b. */
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
-
-/** Reference exp(−B/2) by the plain power series (terms terms) in the even algebra. */
-function seriesExp(D: Dims, B: ArrayLike<number>, terms = 40): Float64Array {
-  const X = new Float64Array(D.r);
-  for (let p = 0; p < D.k; p += 1) X[1 + p] = -0.5 * B[p]!;
-  const sum = new Float64Array(D.r);
-  const term = new Float64Array(D.r);
-  term[0] = 1;
-  sum[0] = 1;
-  for (let m = 1; m < terms; m += 1) {
-    rotorMul(D, term, term, X);
-    for (let a = 0; a < D.r; a += 1) term[a] = term[a]! / m;
-    for (let a = 0; a < D.r; a += 1) sum[a] = sum[a]! + term[a]!;
-  }
-  return sum;
-}
-
-function randomRotor(D: Dims, rand: () => number, spread = 3): Float64Array {
-  return rotorExp(D, new Float64Array(D.r), randomArray(rand, D.k, -spread, spread));
-}
+import { maxDiff } from './support/compare.js';
+import { randomRotor, seriesExp } from './support/rotors.js';
 
 describe('brief §10 identities', () => {
   it('identity 1: bitmask product signs (e0 e1 = e01, e1 e0 = −e01, e01 e01 = −1)', () => {

@@ -15,13 +15,7 @@ import {
   wedge,
 } from '@physin/algebra';
 import { randomArray, seeded } from './support/random.js';
-
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
+import { maxDiff } from './support/compare.js';
 
 /** A cloud of point masses: positions (n each) and masses. */
 function cloud(n: number, count: number, rand: () => number): { x: Float64Array[]; m: number[] } {

@@ -1,13 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { determinant, matMul, orthonormalize, symmetricEigen } from '@physin/algebra';
 import { randomArray, seeded } from './support/random.js';
-
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
+import { maxDiff } from './support/compare.js';
 
 function transpose(n: number, A: ArrayLike<number>): Float64Array {
   const T = new Float64Array(n * n);

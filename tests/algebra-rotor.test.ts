@@ -21,15 +21,9 @@ import {
   rotorReverse,
   rotorToMatrix,
 } from '@physin/algebra';
-import type { Dims } from '@physin/algebra';
 import { randomArray, seeded } from './support/random.js';
-
-function maxDiff(a: ArrayLike<number>, b: ArrayLike<number>): number {
-  expect(a.length).toBe(b.length);
-  let m = 0;
-  for (let i = 0; i < a.length; i += 1) m = Math.max(m, Math.abs(a[i]! - b[i]!));
-  return m;
-}
+import { maxDiff } from './support/compare.js';
+import { randomRotor, seriesExp } from './support/rotors.js';
 
 /** Distance between two rotors up to their common sign (R and −R are the same rotation). */
 function diffUpToSign(a: ArrayLike<number>, b: ArrayLike<number>): number {
@@ -48,26 +42,6 @@ function orthoError(n: number, M: ArrayLike<number>): number {
     }
   }
   return w;
-}
-
-/** Reference exp(−scale·B/2) by the 40-term power series, summed with the public product. */
-function seriesExp(D: Dims, B: ArrayLike<number>, scale = 1, terms = 40): Float64Array {
-  const X = new Float64Array(D.r);
-  for (let p = 0; p < D.k; p += 1) X[1 + p] = -0.5 * scale * B[p]!;
-  const sum = new Float64Array(D.r);
-  const term = new Float64Array(D.r);
-  term[0] = 1;
-  sum[0] = 1;
-  for (let m = 1; m < terms; m += 1) {
-    rotorMul(D, term, term, X);
-    for (let a = 0; a < D.r; a += 1) term[a] = term[a]! / m;
-    for (let a = 0; a < D.r; a += 1) sum[a] = sum[a]! + term[a]!;
-  }
-  return sum;
-}
-
-function randomRotor(D: Dims, rand: () => number, spread = 3): Float64Array {
-  return rotorExp(D, new Float64Array(D.r), randomArray(rand, D.k, -spread, spread));
 }
 
 describe('rotor exponential', () => {

@@ -7,50 +7,12 @@ import type {
   SphereGeometry,
   TorusGeometry,
 } from '../packages/engine/src/collision/query-shapes.js';
-import { randomArray, seeded, uniform } from './support/random.js';
+import { randomArray, randomUnitVector, seeded, uniform } from './support/random.js';
+import { randomRotation, toWorld } from './support/poses.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 /** Containment and tightness are exact up to rounding of a few products: 1e-12 absolute. */
 const TOL = 1e-12;
-
-/** A random rotation: a product of Givens turns in every plane (det = +1 by construction). */
-function randomRotation(rand: () => number, n: number): Float64Array {
-  const M = new Float64Array(n * n);
-  for (let i = 0; i < n; i += 1) M[i * n + i] = 1;
-  for (let i = 0; i < n; i += 1) {
-    for (let j = i + 1; j < n; j += 1) {
-      const t = uniform(rand, -Math.PI, Math.PI);
-      const c = Math.cos(t);
-      const s = Math.sin(t);
-      for (let r = 0; r < n; r += 1) {
-        const a = M[r * n + i]!;
-        const b = M[r * n + j]!;
-        M[r * n + i] = c * a - s * b;
-        M[r * n + j] = s * a + c * b;
-      }
-    }
-  }
-  return M;
-}
-
-function toWorld(n: number, x: Float64Array, M: Float64Array, local: ArrayLike<number>): Float64Array {
-  const out = new Float64Array(n);
-  for (let i = 0; i < n; i += 1) {
-    let s = x[i]!;
-    for (let c = 0; c < n; c += 1) s += M[i * n + c]! * local[c]!;
-    out[i] = s;
-  }
-  return out;
-}
-
-function randomUnit(rand: () => number, n: number): Float64Array {
-  for (;;) {
-    const v = randomArray(rand, n);
-    let s = 0;
-    for (const x of v) s += x * x;
-    if (s > 0.01 && s <= 1) return v.map((x) => x / Math.sqrt(s));
-  }
-}
 
 /** Every sample lies in [min − tol, max + tol]. */
 function expectInside(points: Float64Array[], min: Float64Array, max: Float64Array): void {
@@ -122,7 +84,7 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
       const M = randomRotation(rand, n);
       const margin = trial % 2 === 0 ? 0 : 0.05;
       const [lo, hi] = bounds(n, shape, x, M, margin);
-      const samples = Array.from({ length: 50 }, () => toWorld(n, x, M, randomUnit(rand, n).map((v) => v * radius)));
+      const samples = Array.from({ length: 50 }, () => toWorld(n, x, M, randomUnitVector(rand, n).map((v) => v * radius)));
       expectInside(samples, lo, hi);
       expectTouches((k, s) => x.map((c, i) => c + (i === k ? s * radius : 0)), lo, hi, margin);
     }
@@ -152,7 +114,7 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
       const samples = Array.from({ length: 80 }, () => {
         // A surface point: circle angle φ, then r along a unit vector of the tube's normal space.
         const phi = uniform(rand, 0, 2 * Math.PI);
-        const u = randomUnit(rand, n - 1);
+        const u = randomUnitVector(rand, n - 1);
         const q = new Float64Array(n);
         let m = 1;
         q[i] = (R + r * u[0]!) * Math.cos(phi);
@@ -216,7 +178,7 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
     const rand = seeded(50 + n);
     const x = randomArray(rand, n, -3, 3);
     const M = randomRotation(rand, n);
-    const general: HalfSpaceGeometry = { kind: 'halfspace', normal: randomUnit(rand, n), offset: 0.3 };
+    const general: HalfSpaceGeometry = { kind: 'halfspace', normal: randomUnitVector(rand, n), offset: 0.3 };
     const [lo, hi] = bounds(n, general, x, M, 0.1);
     for (let k = 0; k < n; k += 1) {
       expect(lo[k]).toBe(-Infinity);

@@ -5,7 +5,7 @@ import { describe, expect, it } from 'vitest';
 import { createBroadphase } from '../packages/engine/src/collision/broadphase.js';
 import type { Broadphase, BroadphaseKind } from '../packages/engine/src/collision/broadphase.js';
 import { TreeBroadphase } from '../packages/engine/src/collision/broadphase-tree.js';
-import { randomArray, seeded, uniform } from './support/random.js';
+import { randomArray, randomUnitVector, seeded, uniform } from './support/random.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const KINDS: BroadphaseKind[] = ['tree', 'sap'];
@@ -25,15 +25,6 @@ interface Scene {
 }
 
 const key = (a: number, b: number): string => (a < b ? `${a},${b}` : `${b},${a}`);
-
-function unitVector(rand: () => number, n: number): Float64Array {
-  for (;;) {
-    const v = randomArray(rand, n);
-    let s = 0;
-    for (const x of v) s += x * x;
-    if (s > 0.01 && s <= 1) return v.map((x) => x / Math.sqrt(s));
-  }
-}
 
 function randomBox(rand: () => number, n: number, spread: number): [Float64Array, Float64Array] {
   const c = randomArray(rand, n, -spread, spread);
@@ -124,7 +115,7 @@ function makeScene(kind: BroadphaseKind, n: number, seed: number, count: number)
 }
 
 function addPlane(s: Scene): void {
-  const normal = unitVector(s.rand, s.n);
+  const normal = randomUnitVector(s.rand, s.n);
   const offset = -0.5 * s.spread;
   // A non-unit normal: the broadphase normalises it.
   const id = s.bp.createHalfSpaceProxy(normal.map((v) => v * 3), offset * 3);
@@ -140,7 +131,7 @@ function mutate(s: Scene): void {
   for (const id of ids) {
     if (bp.isHalfSpace(id)) {
       if (rand() < 0.1) {
-        const normal = unitVector(rand, n);
+        const normal = randomUnitVector(rand, n);
         const offset = uniform(rand, -s.spread, 0);
         bp.moveHalfSpace(id, normal, offset);
         s.planes.set(id, { normal, offset });

@@ -2,19 +2,10 @@ import { describe, expect, it } from 'vitest';
 import { createBroadphase } from '../packages/engine/src/collision/broadphase.js';
 import type { BroadphaseKind } from '../packages/engine/src/collision/broadphase.js';
 import { createIdList, queryOverlap } from '../packages/engine/src/collision/query.js';
-import { randomArray, seeded } from './support/random.js';
+import { randomArray, randomUnitVector, seeded } from './support/random.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const KINDS: BroadphaseKind[] = ['tree', 'sap'];
-
-function unitVector(rand: () => number, n: number): Float64Array {
-  for (;;) {
-    const v = randomArray(rand, n);
-    let s = 0;
-    for (const x of v) s += x * x;
-    if (s > 0.01 && s <= 1) return v.map((x) => x / Math.sqrt(s));
-  }
-}
 
 describe.each(KINDS)('queryOverlap (%s)', (kind) => {
   it.each(DIMS)('%iD: equals brute force over tight boxes and half-spaces, after moves', (n) => {
@@ -32,7 +23,7 @@ describe.each(KINDS)('queryOverlap (%s)', (kind) => {
     };
     for (let i = 0; i < 200; i += 1) add();
     for (let p = 0; p < 2; p += 1) {
-      const normal = unitVector(rand, n);
+      const normal = randomUnitVector(rand, n);
       const offset = -0.7 * spread;
       planes.set(bp.createHalfSpaceProxy(normal, offset), [normal, offset]);
     }

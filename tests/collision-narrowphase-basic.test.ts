@@ -4,13 +4,8 @@ import { collideBoxHalfSpace } from '../packages/engine/src/collision/box-halfsp
 import { collideBoxSphere } from '../packages/engine/src/collision/box-sphere.js';
 import { collide, collidePair } from '../packages/engine/src/collision/collide.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
-import type { CollidableShape, Pose } from '../packages/engine/src/collision/manifold.js';
+import type { CollidableShape } from '../packages/engine/src/collision/manifold.js';
 import { meshColliders } from '../packages/engine/src/collision/mesh-colliders.js';
-import type {
-  CollisionBox,
-  CollisionHalfSpace,
-  CollisionSphere,
-} from '../packages/engine/src/collision/narrowphase-shapes.js';
 import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { collideSphereHalfSpace } from '../packages/engine/src/collision/sphere-halfspace.js';
 import { sphereColliders } from '../packages/engine/src/collision/sphere-colliders.js';
@@ -18,36 +13,11 @@ import { collideSphereSphere } from '../packages/engine/src/collision/sphere-sph
 import { torusColliders } from '../packages/engine/src/collision/torus-colliders.js';
 import { resetCollisionWarnings, warnOnce } from '../packages/engine/src/collision/warn-once.js';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { randomPose, turn } from './support/poses.js';
+import { box, plane, sphere } from './support/shapes.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const TOL = 1e-12;
-
-function turn(n: number, M: Float64Array, i: number, j: number, angle: number): Float64Array {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (let col = 0; col < n; col += 1) {
-    const a = M[i * n + col];
-    const b = M[j * n + col];
-    M[i * n + col] = c * a - s * b;
-    M[j * n + col] = s * a + c * b;
-  }
-  return M;
-}
-
-function randomPose(rand: () => number, n: number, spread: number): Pose {
-  const pose = createPose(n);
-  for (let i = 0; i < n; i += 1) for (let j = i + 1; j < n; j += 1) turn(n, pose.M, i, j, uniform(rand, -Math.PI, Math.PI));
-  pose.x.set(randomArray(rand, n, -spread, spread));
-  return pose;
-}
-
-const sphere = (radius: number): CollisionSphere => ({ kind: 'sphere', radius });
-const box = (half: ArrayLike<number>): CollisionBox => ({ kind: 'box', halfExtents: Float64Array.from(half) });
-const plane = (normal: ArrayLike<number>, offset: number): CollisionHalfSpace => ({
-  kind: 'halfspace',
-  normal: Float64Array.from(normal),
-  offset,
-});
 
 function norm(v: ArrayLike<number>, n: number): number {
   let s = 0;

@@ -2,33 +2,18 @@ import { describe, expect, it } from 'vitest';
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Manifold, Pose } from '../packages/engine/src/collision/manifold.js';
-import type { CollisionBox } from '../packages/engine/src/collision/narrowphase-shapes.js';
 import {
   createNarrowphaseScratch,
   SAT_EDGE,
   SAT_FACE_A,
 } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { seeded, uniform } from './support/random.js';
+import { turn } from './support/poses.js';
+import { box } from './support/shapes.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const TOL = 1e-12;
 const MARGIN = 0.02;
-
-function turn(n: number, M: Float64Array, i: number, j: number, angle: number): Float64Array {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (let col = 0; col < n; col += 1) {
-    const a = M[i * n + col];
-    const b = M[j * n + col];
-    M[i * n + col] = c * a - s * b;
-    M[j * n + col] = s * a + c * b;
-  }
-  return M;
-}
-
-function box(half: ArrayLike<number>): CollisionBox {
-  return { kind: 'box', halfExtents: Float64Array.from(half) };
-}
 
 function filled(n: number, v: number): Float64Array {
   return new Float64Array(n).fill(v);

@@ -1,33 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
-import type { Pose } from '../packages/engine/src/collision/manifold.js';
 import { collideMeshHalfSpace } from '../packages/engine/src/collision/mesh-halfspace.js';
 import { collideMeshSphere, MESH_INSIDE_ID } from '../packages/engine/src/collision/mesh-sphere.js';
 import type { CollisionHalfSpace, CollisionMesh } from '../packages/engine/src/collision/narrowphase-shapes.js';
 import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { closestPointOnSimplex } from '../packages/engine/src/collision/simplex-closest.js';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { randomPose } from './support/poses.js';
 
 const DIMS = [2, 3, 4, 5, 6];
-
-function turn(n: number, M: Float64Array, i: number, j: number, angle: number): Float64Array {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (let col = 0; col < n; col += 1) {
-    const a = M[i * n + col];
-    const b = M[j * n + col];
-    M[i * n + col] = c * a - s * b;
-    M[j * n + col] = s * a + c * b;
-  }
-  return M;
-}
-
-function randomPose(rand: () => number, n: number, spread: number): Pose {
-  const pose = createPose(n);
-  for (let i = 0; i < n; i += 1) for (let j = i + 1; j < n; j += 1) turn(n, pose.M, i, j, uniform(rand, -Math.PI, Math.PI));
-  pose.x.set(randomArray(rand, n, -spread, spread));
-  return pose;
-}
 
 /** The cross polytope |x|₁ <= s: vertices ±s e_i (index 2i: +, 2i + 1: −), 2ⁿ facets. */
 function crossPolytope(n: number, s: number): CollisionMesh {

@@ -7,8 +7,6 @@ import {
 } from '../packages/engine/src/collision/box-box-sat.js';
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose } from '../packages/engine/src/collision/manifold.js';
-import type { Pose } from '../packages/engine/src/collision/manifold.js';
-import type { CollisionBox } from '../packages/engine/src/collision/narrowphase-shapes.js';
 import {
   createNarrowphaseScratch,
   SAT_EDGE,
@@ -17,32 +15,10 @@ import {
   SAT_SEPARATED,
 } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { randomPose } from './support/poses.js';
+import { box } from './support/shapes.js';
 
 const DIMS = [2, 3, 4, 5, 6];
-
-/** Rotation by `angle` in the plane (i, j) applied after M: M ← G M (e_i turns toward e_j). */
-function turn(n: number, M: Float64Array, i: number, j: number, angle: number): Float64Array {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (let col = 0; col < n; col += 1) {
-    const a = M[i * n + col];
-    const b = M[j * n + col];
-    M[i * n + col] = c * a - s * b;
-    M[j * n + col] = s * a + c * b;
-  }
-  return M;
-}
-
-function randomPose(rand: () => number, n: number, spread: number): Pose {
-  const pose = createPose(n);
-  for (let i = 0; i < n; i += 1) for (let j = i + 1; j < n; j += 1) turn(n, pose.M, i, j, uniform(rand, -Math.PI, Math.PI));
-  pose.x.set(randomArray(rand, n, -spread, spread));
-  return pose;
-}
-
-function box(half: ArrayLike<number>): CollisionBox {
-  return { kind: 'box', halfExtents: Float64Array.from(half) };
-}
 
 function binomial(a: number, b: number): number {
   let r = 1;

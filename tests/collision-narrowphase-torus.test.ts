@@ -3,29 +3,18 @@ import { createManifold, createPose, maxManifoldPoints } from '../packages/engin
 import type { Pose } from '../packages/engine/src/collision/manifold.js';
 import type {
   CollisionHalfSpace,
-  CollisionSphere,
   CollisionTorus,
 } from '../packages/engine/src/collision/narrowphase-shapes.js';
 import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { collideTorusHalfSpace } from '../packages/engine/src/collision/torus-halfspace.js';
 import { collideTorusSphere } from '../packages/engine/src/collision/torus-sphere.js';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { turn } from './support/poses.js';
+import { sphere } from './support/shapes.js';
 
 const TOL = 1e-12;
 const R = 2;
 const r = 0.7;
-
-function turn(n: number, M: Float64Array, i: number, j: number, angle: number): Float64Array {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (let col = 0; col < n; col += 1) {
-    const a = M[i * n + col];
-    const b = M[j * n + col];
-    M[i * n + col] = c * a - s * b;
-    M[j * n + col] = s * a + c * b;
-  }
-  return M;
-}
 
 const torus = (planeI: number, planeJ: number): CollisionTorus => ({
   kind: 'torus',
@@ -34,8 +23,6 @@ const torus = (planeI: number, planeJ: number): CollisionTorus => ({
   planeI,
   planeJ,
 });
-const sphere = (radius: number): CollisionSphere => ({ kind: 'sphere', radius });
-
 function floor(n: number): CollisionHalfSpace {
   const normal = new Float64Array(n);
   normal[1] = 1;

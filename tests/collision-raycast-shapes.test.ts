@@ -10,40 +10,10 @@ import type {
   TorusGeometry,
 } from '../packages/engine/src/collision/query-shapes.js';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { randomRotation, toWorld } from './support/poses.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const TOL = 1e-9;
-
-/** A random rotation: a product of Givens turns in every plane (so det = +1 by construction). */
-function randomRotation(rand: () => number, n: number): Float64Array {
-  const M = new Float64Array(n * n);
-  for (let i = 0; i < n; i += 1) M[i * n + i] = 1;
-  for (let i = 0; i < n; i += 1) {
-    for (let j = i + 1; j < n; j += 1) {
-      const t = uniform(rand, -Math.PI, Math.PI);
-      const c = Math.cos(t);
-      const s = Math.sin(t);
-      for (let r = 0; r < n; r += 1) {
-        const a = M[r * n + i]!;
-        const b = M[r * n + j]!;
-        M[r * n + i] = c * a - s * b;
-        M[r * n + j] = s * a + c * b;
-      }
-    }
-  }
-  return M;
-}
-
-/** world = x + M·local. */
-function toWorld(n: number, x: Float64Array, M: Float64Array, local: ArrayLike<number>): Float64Array {
-  const out = new Float64Array(n);
-  for (let i = 0; i < n; i += 1) {
-    let s = x[i]!;
-    for (let c = 0; c < n; c += 1) s += M[i * n + c]! * local[c]!;
-    out[i] = s;
-  }
-  return out;
-}
 
 /** M·v (a direction). */
 function rotate(n: number, M: Float64Array, v: ArrayLike<number>): Float64Array {

@@ -7,38 +7,11 @@ import type { RayCastSource } from '../packages/engine/src/collision/query.js';
 import type { QueryShape } from '../packages/engine/src/collision/query-shapes.js';
 import { createRayHit, rayCastShape } from '../packages/engine/src/collision/raycast.js';
 import type { AnyShape } from '../packages/engine/src/shapes/index.js';
-import { randomArray, seeded, uniform } from './support/random.js';
+import { randomArray, randomUnitVector, seeded, uniform } from './support/random.js';
+import { randomRotation } from './support/poses.js';
 
 const DIMS = [2, 3, 4, 5, 6];
 const KINDS: BroadphaseKind[] = ['tree', 'sap'];
-
-function randomRotation(rand: () => number, n: number): Float64Array {
-  const M = new Float64Array(n * n);
-  for (let i = 0; i < n; i += 1) M[i * n + i] = 1;
-  for (let i = 0; i < n; i += 1) {
-    for (let j = i + 1; j < n; j += 1) {
-      const t = uniform(rand, -Math.PI, Math.PI);
-      const c = Math.cos(t);
-      const s = Math.sin(t);
-      for (let r = 0; r < n; r += 1) {
-        const a = M[r * n + i]!;
-        const b = M[r * n + j]!;
-        M[r * n + i] = c * a - s * b;
-        M[r * n + j] = s * a + c * b;
-      }
-    }
-  }
-  return M;
-}
-
-function unitVector(rand: () => number, n: number): Float64Array {
-  for (;;) {
-    const v = randomArray(rand, n);
-    let s = 0;
-    for (const x of v) s += x * x;
-    if (s > 0.01 && s <= 1) return v.map((x) => x / Math.sqrt(s));
-  }
-}
 
 /** The cross polytope |x|₁ <= s as facet planes and vertices. */
 function crossPolytope(n: number, s: number): QueryShape {
@@ -97,7 +70,7 @@ function makeScene(kind: BroadphaseKind, n: number, seed: number, count: number)
   }
   const I = new Float64Array(n * n);
   for (let k = 0; k < n; k += 1) I[k * n + k] = 1;
-  const normal = unitVector(rand, n);
+  const normal = randomUnitVector(rand, n);
   bodies.set(bp.createHalfSpaceProxy(normal, -1.2 * spread), {
     shape: { kind: 'halfspace', normal, offset: -1.2 * spread },
     x: new Float64Array(n),
@@ -185,7 +158,7 @@ describe('the tree prunes the ray walk', () => {
     for (let q = 0; q < 50; q += 1) {
       casts = 0;
       const o = randomArray(rand, 3, -spread, spread);
-      const d = unitVector(rand, 3);
+      const d = randomUnitVector(rand, 3);
       const id = rayCastClosest(bp, counting, o, d, 3, out);
       expect(id).toBe(bruteForce(3, bodies, o, d, 3).id);
       total += casts;

@@ -24,3 +24,13 @@ export function randomArray(rand: () => number, len: number, lo = -1, hi = 1): F
   for (let i = 0; i < len; i += 1) out[i] = uniform(rand, lo, hi);
   return out;
 }
+
+/** A seeded random unit vector: rejection from the cube [−1, 1)ⁿ (0.01 < |v|² <= 1), then v / |v|. */
+export function randomUnitVector(rand: () => number, n: number): Float64Array {
+  for (;;) {
+    const v = randomArray(rand, n);
+    let s = 0;
+    for (const x of v) s += x * x;
+    if (s > 0.01 && s <= 1) return v.map((x) => x / Math.sqrt(s));
+  }
+}

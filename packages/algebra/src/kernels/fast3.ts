@@ -23,15 +23,6 @@ import type { RotorKernels } from './types.js';
  */
 const SINC_SERIES_BELOW = 1e-2;
 
-/** sin(θ/2)/θ for θ ≥ 0, accurate near 0 (the factor of B in exp(−B/2)). */
-function halfSinc(theta: number): number {
-  if (theta < SINC_SERIES_BELOW) {
-    const t2 = theta * theta;
-    return 0.5 - t2 / 48 + (t2 * t2) / 3840;
-  }
-  return Math.sin(0.5 * theta) / theta;
-}
-
 /**
  * Builds the 3D kernels. `D` must be `dims(3)`'s tables (only its size is implied: the kernels
  * are closed forms and read no table), so `dims` can call this while building D.
@@ -134,7 +125,9 @@ export function createFast3Kernels(D: Dims): RotorKernels {
       const b0 = B[0]!, b1 = B[1]!, b2 = B[2]!;
       // Every 3D bivector is simple: exp(−X/2) = cos(θ/2) − (sin(θ/2)/θ) X with X = scale·B, θ = |X|.
       const theta = Math.abs(scale) * Math.sqrt(b0 * b0 + b1 * b1 + b2 * b2);
-      const f = -halfSinc(theta) * scale;
+      // sin(θ/2)/θ written out (not a helper): V8 boxes a double returned by a call it does not inline.
+      const t2 = theta * theta;
+      const f = -(theta < SINC_SERIES_BELOW ? 0.5 - t2 / 48 + (t2 * t2) / 3840 : Math.sin(0.5 * theta) / theta) * scale;
       out[0] = Math.cos(0.5 * theta);
       out[1] = f * b0;
       out[2] = f * b1;

@@ -34,15 +34,6 @@ import type { RotorKernels } from './types.js';
  */
 const SINC_SERIES_BELOW = 1e-2;
 
-/** sin(θ/2)/θ for θ ≥ 0, accurate near 0. */
-function halfSinc(theta: number): number {
-  if (theta < SINC_SERIES_BELOW) {
-    const t2 = theta * theta;
-    return 0.5 - t2 / 48 + (t2 * t2) / 3840;
-  }
-  return Math.sin(0.5 * theta) / theta;
-}
-
 /**
  * Builds the 4D kernels. `D` must be `dims(4)`'s tables (the kernels are closed forms and read
  * no table), so `dims` can call this while building D.
@@ -188,8 +179,10 @@ export function createFast4Kernels(D: Dims): RotorKernels {
       const thetaM = Math.sqrt(dm0 * dm0 + dm1 * dm1 + dm2 * dm2);
       const cP = Math.cos(0.5 * thetaP);
       const cM = Math.cos(0.5 * thetaM);
-      const fP = halfSinc(thetaP);
-      const fM = halfSinc(thetaM);
+      // sin(θ/2)/θ written out (not a helper): V8 boxes a double returned by a call it does not inline.
+      const tP2 = thetaP * thetaP, tM2 = thetaM * thetaM;
+      const fP = thetaP < SINC_SERIES_BELOW ? 0.5 - tP2 / 48 + (tP2 * tP2) / 3840 : Math.sin(0.5 * thetaP) / thetaP;
+      const fM = thetaM < SINC_SERIES_BELOW ? 0.5 - tM2 / 48 + (tM2 * tM2) / 3840 : Math.sin(0.5 * thetaM) / thetaM;
       // P± = (1 ± I)/2 expanded: the I parts of the two halves differ in sign.
       const g = 0.5 * (fP + fM);
       const h = 0.5 * (fP - fM);

@@ -1,0 +1,670 @@
+/**
+ * Rigid bodies: state, mass properties and the calls that push them around.
+ *
+ * @module
+ */
+import {
+  checkBivector,
+  checkDims,
+  checkNumber,
+  checkPlane,
+  checkRotor,
+  checkVector,
+  rotateInPlane as rotorRotateInPlane,
+} from '@physin/algebra';
+import type { Dims } from '@physin/algebra';
+import { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';
+import { bodyDefaults, ROTOR_INPUT_TOLERANCE } from './params.js';
+import type { Shape } from './shapes/shape.js';
+
+/**
+ * How a body moves.
+ * - `'dynamic'`: moved by forces, gravity, impulses and (later) contacts and joints; mass > 0.
+ * - `'static'`: never moves; infinite mass. A body of mass 0 is static.
+ * - `'kinematic'`: moves by its own linear and angular velocity exactly, ignoring forces,
+ *   gravity and contacts (infinite mass for everything it touches).
+ */
+export type BodyType = 'dynamic' | 'static' | 'kinematic';
+
+/** Surface properties used by the contact solver. */
+export interface Material {
+  /** Coulomb friction coefficient (dimensionless, >= 0). */
+  readonly friction: number;
+  /** Coefficient of restitution (dimensionless, in [0, 1]): 0 = no bounce, 1 = elastic. */
+  readonly restitution: number;
+}
+
+/** Options of `new Body(D, options)`. Vectors are any array-like of numbers; they are copied. */
+export interface BodyOptions {
+  /** The collision and mass shape. Its n must equal D.n (a ball, n = null, fits any n). */
+  readonly shape: Shape;
+  /**
+   * Mass (kg, finite, >= 0). 0 makes the body static (unless `type` says 'kinematic').
+   * Default: 1 for a dynamic or kinematic body, 0 for a half-space (which can only be static).
+   */
+  readonly mass?: number;
+  /** How the body moves; default 'dynamic', or 'static' when mass is 0 or the shape a half-space. */
+  readonly type?: BodyType;
+  /**
+   * Position (m, n numbers) of the origin of the coordinates the shape was described in (for most
+   * shapes the centre of mass). Default: the world origin.
+   */
+  readonly position?: ArrayLike<number>;
+  /** Orientation rotor (r numbers, a unit rotor); default the identity. Corrected to an exact rotor. */
+  readonly rotor?: ArrayLike<number>;
+  /** Linear velocity of the centre of mass (m/s, n numbers); default 0. Not allowed on a static body. */
+  readonly velocity?: ArrayLike<number>;
+  /** World angular velocity bivector (rad/s, k numbers); default 0. Not allowed on a static body. */
+  readonly angularVelocity?: ArrayLike<number>;
+  /** Friction and restitution; missing entries take `bodyDefaults`. */
+  readonly material?: Partial<Material>;
+  /** An optional name, used in error messages. */
+  readonly name?: string;
+}
+
+/**
+ * @internal Motion codes of a body (an integer compare is cheaper than a string compare on the hot
+ * path): {@link MOTION_DYNAMIC}, {@link MOTION_KINEMATIC}, {@link MOTION_STATIC}.
+ */
+export type Motion = 0 | 1 | 2;
+/** @internal Motion code of a dynamic body. */
+export const MOTION_DYNAMIC = 0;
+/** @internal Motion code of a kinematic body. */
+export const MOTION_KINEMATIC = 1;
+/** @internal Motion code of a static body. */
+export const MOTION_STATIC = 2;
+
+const motionOf: Record<BodyType, Motion> = { dynamic: MOTION_DYNAMIC, kinematic: MOTION_KINEMATIC, static: MOTION_STATIC };
+const typeOf: readonly BodyType[] = ['dynamic', 'kinematic', 'static'];
+
+const OPTION_NAMES = new Set([
+  'shape',
+  'mass',
+  'type',
+  'position',
+  'rotor',
+  'velocity',
+  'angularVelocity',
+  'material',
+  'name',
+]);
+
+let nextBodyId = 1;
+
+/** Per-dimension scratch of the body methods (set-up calls, never the step). */
+interface BodyScratch {
+  readonly bivector: Float64Array;
+  readonly tmp: Float64Array;
+  readonly vector: Float64Array;
+}
+const scratchByN: (BodyScratch | undefined)[] = [];
+function scratchFor(D: Dims): BodyScratch {
+  return (scratchByN[D.n] ??= {
+    bivector: new Float64Array(D.k),
+    tmp: new Float64Array(D.k),
+    vector: new Float64Array(D.n),
+  });
+}
+
+function isZero(a: ArrayLike<number>): boolean {
+  for (let i = 0; i < a.length; i += 1) if (a[i] !== 0) return false;
+  return true;
+}
+
+/** out += a ∧ b: (a∧b)_ij = a_i b_j − a_j b_i. */
+function addWedge(D: Dims, out: Float64Array, a: ArrayLike<number>, b: ArrayLike<number>): void {
+  const { k, planeI, planeJ } = D;
+  for (let p = 0; p < k; p += 1) {
+    const i = planeI[p]!;
+    const j = planeJ[p]!;
+    out[p] = out[p]! + (a[i]! * b[j]! - a[j]! * b[i]!);
+  }
+}
+
+/**
+ * A rigid body in n dimensions.
+ *
+ * **State** (SI units, world frame), all `Float64Array` views into one buffer the body owns:
+ * - `x` (n): position of the centre of mass (m);
+ * - `R` (r = 2^(n−1)): orientation rotor; a body point at ξ in the body frame is at x + R ξ R~;
+ * - `v` (n): linear velocity of the centre of mass (m/s);
+ * - `L` (k = n(n−1)/2): angular momentum bivector about the centre of mass (kg·m²/s) — the
+ *   angular state: a torque-free dynamic body keeps it bit-exactly;
+ * - `w` (k): angular velocity bivector (rad/s), derived: ω = I_world⁻¹ L, rebuilt whenever L or R
+ *   changes (for a kinematic body ω is the given value and L is derived from it);
+ * - `force` (n, N) and `torque` (k, N·m): accumulated since the last step, cleared by each step.
+ *
+ * The body frame is the principal frame of the shape, so the inertia is diagonal there
+ * (`inertia`, k numbers, I_(ij) = C_ii + C_jj). Read the fields at any time; write them only through
+ * the methods (they keep ω, L and the mass in agreement). The views may be rebound to other
+ * storage when a world packs its bodies into flat arrays: read `body.x` anew rather than keeping
+ * the array.
+ */
+export class Body {
+  /** A positive integer, unique in this process. */
+  readonly id: number;
+  /** The optional name given in the options (for messages). */
+  readonly name: string | undefined;
+  /** The tables of the body's dimension. */
+  readonly D: Dims;
+  /** The shape (shared, immutable). */
+  readonly shape: Shape;
+  /** Surface properties (frozen). */
+  readonly material: Material;
+
+  /** @internal Motion code: MOTION_DYNAMIC, MOTION_KINEMATIC or MOTION_STATIC. */
+  motion: Motion;
+  /** @internal Mass (kg); 0 for static and massless kinematic bodies. */
+  massValue: number;
+  /** @internal 1/mass for dynamic bodies, 0 otherwise (infinite mass for the solver). */
+  invMass: number;
+  /**
+   * Principal inertia in the body frame (k numbers, kg·m²); zeros when the body has no mass.
+   * Read only: use `setMass` to change it.
+   */
+  readonly inertia: Float64Array;
+  /** @internal Inverse principal inertia (k numbers); zeros for static and kinematic bodies. */
+  readonly invInertia: Float64Array;
+  /**
+   * @internal The centre of mass seen from the origin of the coordinates the shape was described
+   * in, in the body frame (n numbers): x = origin + R·comOffset. null when the two coincide.
+   */
+  readonly comOffset: Float64Array | null;
+
+  /** @internal The buffer holding x, R, v, L, w, force, torque (in this order). */
+  storage: Float64Array;
+  /** @internal Offset of this body's record in `storage`. */
+  storageOffset: number;
+  /** @internal View of x, R, v, L, w as one record (the part a step snapshot copies). */
+  stateView: Float64Array;
+  /** @internal Whether a torque was applied since the last step. */
+  hasTorque = false;
+  /** @internal The world this body belongs to, or null. */
+  owner: object | null = null;
+
+  private xView!: Float64Array;
+  private rView!: Float64Array;
+  private vView!: Float64Array;
+  private lView!: Float64Array;
+  private wView!: Float64Array;
+  private fView!: Float64Array;
+  private tView!: Float64Array;
+
+  /**
+   * Builds a body. Every option is checked before anything is built (TypeError for a wrong type or
+   * length, RangeError for a bad value, naming the option).
+   *
+   * For a shape that carries a principal frame (`frameOffset`, `frameRotor`: convex meshes), the
+   * pose given is that of the coordinates the shape was described in, and the body's state is the
+   * principal frame: x = position + R_given·frameOffset, R = R_given·frameRotor.
+   */
+  constructor(D: Dims, options: BodyOptions) {
+    const fn = 'new Body';
+    checkDims(D, fn);
+    if (options === null || typeof options !== 'object') {
+      throw new TypeError(`${fn}: argument 'options' must be an object with at least 'shape', got ${options === null ? 'null' : typeof options}`);
+    }
+    for (const key of Object.keys(options)) {
+      if (!OPTION_NAMES.has(key)) {
+        throw new RangeError(`${fn}: unknown option '${key}' (known: ${[...OPTION_NAMES].join(', ')})`);
+      }
+    }
+    const { n, k } = D;
+    const shape = options.shape as Shape | undefined;
+    if (
+      shape === null ||
+      typeof shape !== 'object' ||
+      typeof (shape as { kind?: unknown }).kind !== 'string' ||
+      typeof (shape as { massProperties?: unknown }).massProperties !== 'function'
+    ) {
+      throw new TypeError(`${fn}: option 'shape' must be a shape (HyperBox, HyperSphere, HalfSpace, ...), got ${shape === null ? 'null' : typeof shape}`);
+    }
+    if (shape.n !== null && shape.n !== n) {
+      throw new RangeError(`${fn}: option 'shape' was built for n = ${shape.n} but the body's D has n = ${n}`);
+    }
+    const name = options.name;
+    if (name !== undefined && typeof name !== 'string') {
+      throw new TypeError(`${fn}: option 'name' must be a string, got ${typeof name}`);
+    }
+    const isHalfSpace = shape.kind === 'halfspace';
+    let mass: number;
+    if (options.mass === undefined) {
+      mass = options.type === 'static' || isHalfSpace ? 0 : bodyDefaults.mass;
+    } else {
+      checkNumber('mass', options.mass, fn);
+      mass = options.mass;
+      if (mass < 0) throw new RangeError(`${fn}: option 'mass' must be >= 0 (0 = static), got ${mass}`);
+    }
+    let type: BodyType;
+    if (options.type === undefined) {
+      type = mass === 0 ? 'static' : 'dynamic';
+    } else {
+      if (typeof options.type !== 'string') {
+        throw new TypeError(`${fn}: option 'type' must be 'dynamic', 'static' or 'kinematic', got ${typeof options.type}`);
+      }
+      if (!(options.type in motionOf)) {
+        throw new RangeError(`${fn}: option 'type' must be 'dynamic', 'static' or 'kinematic', got '${options.type}'`);
+      }
+      type = options.type;
+    }
+    if (type === 'dynamic' && mass === 0) {
+      throw new RangeError(`${fn}: a dynamic body needs option 'mass' > 0 (mass 0 means static)`);
+    }
+    if (type === 'static') mass = 0;
+    if (isHalfSpace && mass > 0) {
+      throw new RangeError(
+        `${fn}: option 'shape' is a half-space, which has no finite mass: give it mass 0 (static) or type 'kinematic' with mass 0`,
+      );
+    }
+    if (options.position !== undefined) checkVector(D, 'position', options.position, fn);
+    if (options.rotor !== undefined) {
+      checkRotor(D, 'rotor', options.rotor, fn);
+      const defect = D.kernels.defect(Float64Array.from(options.rotor));
+      if (!(defect <= ROTOR_INPUT_TOLERANCE)) {
+        throw new RangeError(
+          `${fn}: option 'rotor' must be a unit rotor (defect |R R~ - 1| <= ${ROTOR_INPUT_TOLERANCE}), got defect ${defect}`,
+        );
+      }
+    }
+    if (options.velocity !== undefined) checkVector(D, 'velocity', options.velocity, fn);
+    if (options.angularVelocity !== undefined) checkBivector(D, 'angularVelocity', options.angularVelocity, fn);
+    if (type === 'static') {
+      if ((options.velocity !== undefined && !isZero(options.velocity)) ||
+          (options.angularVelocity !== undefined && !isZero(options.angularVelocity))) {
+        throw new RangeError(`${fn}: a static body cannot have a velocity; use type 'kinematic' for a body that moves by its velocity`);
+      }
+    }
+    const material = checkMaterial(options.material, fn);
+    const frameOffset = shape.frameOffset;
+    const frameRotor = shape.frameRotor;
+    if (frameOffset !== undefined) checkVector(D, 'shape.frameOffset', frameOffset, fn);
+    if (frameRotor !== undefined) checkRotor(D, 'shape.frameRotor', frameRotor, fn);
+    const inertia = new Float64Array(k);
+    if (mass > 0) {
+      const mp = shape.massProperties(D, mass);
+      checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
+      inertia.set(mp.inertia);
+    }
+    // All checks passed: build.
+    this.id = nextBodyId;
+    nextBodyId += 1;
+    this.name = name;
+    this.D = D;
+    this.shape = shape;
+    this.material = material;
+    this.motion = motionOf[type];
+    this.massValue = mass;
+    this.invMass = type === 'dynamic' ? 1 / mass : 0;
+    this.inertia = inertia;
+    this.invInertia = new Float64Array(k);
+    this.fillInverseInertia();
+    this.storage = new Float64Array(Body.recordLength(D));
+    this.storageOffset = 0;
+    this.stateView = this.storage; // replaced by bindViews
+    this.bindViews();
+
+    const K = D.kernels;
+    const R = this.rView;
+    if (options.rotor !== undefined) {
+      R.set(options.rotor);
+      if (K.defect(R) > 0) K.correct(R, R);
+    } else {
+      R[0] = 1;
+    }
+    let comOffset: Float64Array | null = null;
+    if (frameOffset !== undefined && !isZero(frameOffset)) {
+      // Centre of mass seen from the described origin, in the body (principal) frame.
+      comOffset = new Float64Array(n);
+      if (frameRotor !== undefined) K.applyVectorInverse(comOffset, Float64Array.from(frameRotor), Float64Array.from(frameOffset));
+      else comOffset.set(frameOffset);
+    }
+    this.comOffset = comOffset;
+    if (frameRotor !== undefined) {
+      K.mul(R, R, Float64Array.from(frameRotor));
+      if (K.defect(R) > 0) K.correct(R, R);
+    }
+    if (options.position !== undefined) this.xView.set(options.position);
+    this.placeCentreOfMass();
+    if (options.velocity !== undefined) this.vView.set(options.velocity);
+    if (options.angularVelocity !== undefined) {
+      this.wView.set(options.angularVelocity);
+      this.momentumFromOmega();
+    }
+  }
+
+  /** Number of Float64 entries of one body record: x, R, v, L, w (the state), then force, torque. */
+  static recordLength(D: Dims): number {
+    return Body.stateLength(D) + D.n + D.k;
+  }
+
+  /** Number of Float64 entries of the state part of a record: x (n), R (r), v (n), L (k), w (k). */
+  static stateLength(D: Dims): number {
+    return 2 * D.n + D.r + 2 * D.k;
+  }
+
+  /** How the body moves: 'dynamic', 'static' or 'kinematic'. */
+  get type(): BodyType {
+    return typeOf[this.motion]!;
+  }
+
+  /** Mass (kg); 0 for a static body. */
+  get mass(): number {
+    return this.massValue;
+  }
+
+  /** Position of the centre of mass (m, n numbers). */
+  get x(): Float64Array {
+    return this.xView;
+  }
+  /** Orientation rotor (r numbers). */
+  get R(): Float64Array {
+    return this.rView;
+  }
+  /** Linear velocity (m/s, n numbers). */
+  get v(): Float64Array {
+    return this.vView;
+  }
+  /** Angular momentum about the centre of mass, world frame (kg·m²/s, k numbers). */
+  get L(): Float64Array {
+    return this.lView;
+  }
+  /** Angular velocity, world frame (rad/s, k numbers): I_world⁻¹ L. */
+  get w(): Float64Array {
+    return this.wView;
+  }
+  /** Force accumulated since the last step (N, n numbers). */
+  get force(): Float64Array {
+    return this.fView;
+  }
+  /** Torque accumulated since the last step (N·m, bivector, k numbers). */
+  get torque(): Float64Array {
+    return this.tView;
+  }
+
+  /** A short description for messages: `body 7 ('crate')`. */
+  get label(): string {
+    return this.name === undefined ? `body ${this.id}` : `body ${this.id} ('${this.name}')`;
+  }
+
+  /**
+   * @internal Moves the record to `storage` at `offset` (copying the current values) and rebinds
+   * the views; for a world that packs its bodies into flat arrays.
+   */
+  bindStorage(storage: Float64Array, offset: number): void {
+    const len = Body.recordLength(this.D);
+    if (offset < 0 || offset + len > storage.length) throw new RangeError(`Body.bindStorage: record does not fit at ${offset}`);
+    storage.set(this.storage.subarray(this.storageOffset, this.storageOffset + len), offset);
+    this.storage = storage;
+    this.storageOffset = offset;
+    this.bindViews();
+  }
+
+  private bindViews(): void {
+    const { n, r, k } = this.D;
+    const s = this.storage;
+    let o = this.storageOffset;
+    const take = (len: number): Float64Array => {
+      const view = s.subarray(o, o + len);
+      o += len;
+      return view;
+    };
+    this.stateView = s.subarray(o, o + Body.stateLength(this.D));
+    this.xView = take(n);
+    this.rView = take(r);
+    this.vView = take(n);
+    this.lView = take(k);
+    this.wView = take(k);
+    this.fView = take(n);
+    this.tView = take(k);
+  }
+
+  private fillInverseInertia(): void {
+    const dynamic = this.motion === MOTION_DYNAMIC;
+    for (let p = 0; p < this.D.k; p += 1) {
+      const I = this.inertia[p]!;
+      this.invInertia[p] = dynamic && I > 0 ? 1 / I : 0;
+    }
+  }
+
+  /** L = I_world ω from the current w (massless: L = 0). */
+  private momentumFromOmega(): void {
+    if (this.massValue > 0) {
+      momentumFromAngularVelocity(this.D, this.lView, this.rView, this.inertia, this.wView, scratchFor(this.D).tmp);
+    } else {
+      this.lView.fill(0);
+    }
+  }
+
+  /** @internal ω = I_world⁻¹ L for a dynamic body (call after any change of L or R). */
+  omegaFromMomentum(): void {
+    if (this.motion === MOTION_DYNAMIC) {
+      angularVelocityFromMomentum(this.D, this.wView, this.rView, this.invInertia, this.lView, scratchFor(this.D).tmp);
+    }
+  }
+
+  /** Moves x so the described origin (see `setPositionN`) is at `p`: x = p + R·comOffset. */
+  private placeCentreOfMass(): void {
+    const off = this.comOffset;
+    if (off === null) return;
+    const c = scratchFor(this.D).vector;
+    this.D.kernels.applyVector(c, this.rView, off);
+    for (let i = 0; i < this.D.n; i += 1) this.xView[i] = this.xView[i]! + c[i]!;
+  }
+
+  /**
+   * Kinetic energy (J): ½ m |v|² + ½ L·ω. 0 for a static body; for a kinematic body, the energy of
+   * its given mass moving at its given velocity.
+   */
+  kineticEnergy(): number {
+    if (this.massValue === 0) return 0;
+    let lin = 0;
+    for (let i = 0; i < this.D.n; i += 1) lin += this.vView[i]! * this.vView[i]!;
+    let ang = 0;
+    for (let p = 0; p < this.D.k; p += 1) ang += this.lView[p]! * this.wView[p]!;
+    return 0.5 * (this.massValue * lin + ang);
+  }
+
+  /**
+   * Writes the position (m, n numbers) of the origin of the coordinates the shape was described in
+   * (the centre of mass for every shape without a `frameOffset`) into `out` and returns it.
+   */
+  getPositionN(out: Float64Array = new Float64Array(this.D.n)): Float64Array {
+    const { n } = this.D;
+    if (!(out instanceof Float64Array) || out.length !== n) {
+      throw new TypeError(`Body.getPositionN: argument 'out' must be a Float64Array of length ${n}`);
+    }
+    out.set(this.xView);
+    const off = this.comOffset;
+    if (off !== null) {
+      const c = scratchFor(this.D).vector;
+      this.D.kernels.applyVector(c, this.rView, off);
+      for (let i = 0; i < n; i += 1) out[i] = out[i]! - c[i]!;
+    }
+    return out;
+  }
+
+  /**
+   * Moves the body (a teleport; velocities are kept) so that the origin of the coordinates its shape
+   * was described in is at `p` (m, n numbers) — the centre of mass for every shape without a
+   * `frameOffset`. Allowed on every type of body.
+   */
+  setPositionN(p: ArrayLike<number>): this {
+    checkVector(this.D, 'p', p, 'Body.setPositionN');
+    this.xView.set(p);
+    this.placeCentreOfMass();
+    return this;
+  }
+
+  /**
+   * Turns the body by `angle` (rad) in the world plane (i, j), e_i toward e_j, about the origin of
+   * the coordinates its shape was described in (which stays in place). The world angular velocity
+   * is kept; L is recomputed for the new orientation.
+   */
+  rotateInPlane(i: number, j: number, angle: number): this {
+    const fn = 'Body.rotateInPlane';
+    checkPlane(this.D, 'i', i, 'j', j, fn);
+    checkNumber('angle', angle, fn);
+    const origin = this.comOffset === null ? null : this.getPositionN();
+    rotorRotateInPlane(this.D, this.rView, this.rView, i, j, angle);
+    if (origin !== null) {
+      this.xView.set(origin);
+      this.placeCentreOfMass();
+    }
+    if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
+    return this;
+  }
+
+  /** Sets the linear velocity (m/s, n numbers). A static body accepts only zero. */
+  setLinearVelocity(v: ArrayLike<number>): this {
+    const fn = 'Body.setLinearVelocity';
+    checkVector(this.D, 'v', v, fn);
+    if (this.motion === MOTION_STATIC && !isZero(v)) {
+      throw new RangeError(`${fn}: ${this.label} is static and cannot move (argument 'v' must be zero)`);
+    }
+    this.vView.set(v);
+    return this;
+  }
+
+  /**
+   * Sets the world angular velocity bivector ω (rad/s, k numbers) and the angular momentum that
+   * goes with it, L = I_world ω. A static body accepts only zero.
+   */
+  setAngularVelocity(w: ArrayLike<number>): this {
+    const fn = 'Body.setAngularVelocity';
+    checkBivector(this.D, 'w', w, fn);
+    if (this.motion === MOTION_STATIC && !isZero(w)) {
+      throw new RangeError(`${fn}: ${this.label} is static and cannot turn (argument 'w' must be zero)`);
+    }
+    this.wView.set(w);
+    this.momentumFromOmega();
+    return this;
+  }
+
+  /**
+   * Applies an impulse j (N·s, n numbers) at the centre of mass: v += j/m. No effect on static and
+   * kinematic bodies (infinite mass).
+   */
+  applyCentralImpulse(j: ArrayLike<number>): this {
+    checkVector(this.D, 'j', j, 'Body.applyCentralImpulse');
+    if (this.motion !== MOTION_DYNAMIC) return this;
+    const im = this.invMass;
+    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
+    return this;
+  }
+
+  /**
+   * Applies an impulse j (N·s, n numbers) at the arm r (m, n numbers: the point of application minus
+   * the centre of mass, world frame): v += j/m, L += r ∧ j, then ω = I_world⁻¹ L. No effect on static
+   * and kinematic bodies.
+   */
+  applyImpulse(j: ArrayLike<number>, r: ArrayLike<number>): this {
+    const fn = 'Body.applyImpulse';
+    checkVector(this.D, 'j', j, fn);
+    checkVector(this.D, 'r', r, fn);
+    if (this.motion !== MOTION_DYNAMIC) return this;
+    const im = this.invMass;
+    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
+    addWedge(this.D, this.lView, r, j);
+    this.omegaFromMomentum();
+    return this;
+  }
+
+  /** Adds a force f (N, n numbers) at the centre of mass, for the next step. Ignored by static and kinematic bodies. */
+  applyCentralForce(f: ArrayLike<number>): this {
+    checkVector(this.D, 'f', f, 'Body.applyCentralForce');
+    if (this.motion !== MOTION_DYNAMIC) return this;
+    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    return this;
+  }
+
+  /**
+   * Adds a force f (N) at the arm r (m, world frame, from the centre of mass) for the next step:
+   * force += f, torque += r ∧ f. Ignored by static and kinematic bodies.
+   */
+  applyForce(f: ArrayLike<number>, r: ArrayLike<number>): this {
+    const fn = 'Body.applyForce';
+    checkVector(this.D, 'f', f, fn);
+    checkVector(this.D, 'r', r, fn);
+    if (this.motion !== MOTION_DYNAMIC) return this;
+    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    addWedge(this.D, this.tView, r, f);
+    this.hasTorque = true;
+    return this;
+  }
+
+  /** Adds a torque bivector t (N·m, k numbers, world frame) for the next step. Ignored by static and kinematic bodies. */
+  applyTorque(t: ArrayLike<number>): this {
+    checkBivector(this.D, 't', t, 'Body.applyTorque');
+    if (this.motion !== MOTION_DYNAMIC) return this;
+    for (let p = 0; p < this.D.k; p += 1) this.tView[p] = this.tView[p]! + t[p]!;
+    this.hasTorque = true;
+    return this;
+  }
+
+  /**
+   * Changes the mass (kg, finite, >= 0); the inertia scales with it. 0 makes the body static (its
+   * velocities and pending forces are cleared); a positive mass makes a static body dynamic. A
+   * moving body keeps v and ω, and L is rescaled to I_world ω.
+   */
+  setMass(m: number): this {
+    const fn = 'Body.setMass';
+    checkNumber('m', m, fn);
+    if (m < 0) throw new RangeError(`${fn}: argument 'm' must be >= 0 (0 = static), got ${m}`);
+    if (m > 0 && this.shape.kind === 'halfspace') {
+      throw new RangeError(`${fn}: ${this.label} is a half-space, which has no finite mass (argument 'm' must be 0)`);
+    }
+    if (m === 0) {
+      this.motion = MOTION_STATIC;
+      this.massValue = 0;
+      this.invMass = 0;
+      this.inertia.fill(0);
+      this.fillInverseInertia();
+      this.vView.fill(0);
+      this.lView.fill(0);
+      this.wView.fill(0);
+      this.clearForces();
+      return this;
+    }
+    const mp = this.shape.massProperties(this.D, m);
+    if (this.motion === MOTION_STATIC) this.motion = MOTION_DYNAMIC;
+    this.massValue = m;
+    this.invMass = this.motion === MOTION_DYNAMIC ? 1 / m : 0;
+    this.inertia.set(mp.inertia);
+    this.fillInverseInertia();
+    this.momentumFromOmega();
+    return this;
+  }
+
+  /** @internal Clears the accumulated force and torque. */
+  clearForces(): void {
+    this.fView.fill(0);
+    if (this.hasTorque) {
+      this.tView.fill(0);
+      this.hasTorque = false;
+    }
+  }
+}
+
+function checkMaterial(material: unknown, fn: string): Material {
+  if (material === undefined) {
+    return Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
+  }
+  if (material === null || typeof material !== 'object') {
+    throw new TypeError(`${fn}: option 'material' must be an object { friction, restitution }, got ${material === null ? 'null' : typeof material}`);
+  }
+  const m = material as Record<string, unknown>;
+  for (const key of Object.keys(m)) {
+    if (key !== 'friction' && key !== 'restitution') {
+      throw new RangeError(`${fn}: unknown material property '${key}' (known: friction, restitution)`);
+    }
+  }
+  const friction = m.friction === undefined ? bodyDefaults.friction : m.friction;
+  const restitution = m.restitution === undefined ? bodyDefaults.restitution : m.restitution;
+  checkNumber('material.friction', friction, fn);
+  checkNumber('material.restitution', restitution, fn);
+  if (friction < 0) throw new RangeError(`${fn}: option 'material.friction' must be >= 0, got ${friction}`);
+  if (restitution < 0 || restitution > 1) {
+    throw new RangeError(`${fn}: option 'material.restitution' must be in [0, 1], got ${restitution}`);
+  }
+  return Object.freeze({ friction, restitution });
+}

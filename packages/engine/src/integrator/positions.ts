@@ -1,0 +1,57 @@
+/**
+ * The last stage of a sub-step: velocities move the bodies.
+ *
+ * - dynamic: x += h v (semi-implicit Euler: the velocity of the end of the step), then the rotor
+ *   step of `rotor-step.ts` under the fixed world L (midpoint rule, correction, ω rebuilt);
+ * - kinematic: x += h v and R ← exp(−h ω/2) R with its own fixed ω (exact for constant
+ *   velocities); L follows as I_world ω when it has a mass;
+ * - static: nothing.
+ *
+ * Each body is checked for non-finite numbers right after its own update; the stage stops at the
+ * first bad one and returns its index, so the world can undo the step before anything reads it.
+ *
+ * @module
+ */
+import type { Dims } from '@physin/algebra';
+import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
+import type { Body } from '../body.js';
+import { momentumFromAngularVelocity } from '../inertia-world.js';
+import { advanceRotor, advanceRotorKinematic } from './rotor-step.js';
+import type { RotorStepScratch } from './rotor-step.js';
+import { STEP_H } from './step-constants.js';
+import { isStateFinite } from './step-state.js';
+
+function isZero(a: Float64Array): boolean {
+  for (let i = 0; i < a.length; i += 1) if (a[i] !== 0) return false;
+  return true;
+}
+
+/**
+ * Moves every non-static body by one sub-step. Unchecked hot-path stage; allocates nothing.
+ *
+ * @param constants - h (s), the rotor iterations and tolerance (see `step-constants.ts`).
+ * @returns the index of the first body whose state became non-finite, or -1.
+ */
+export function integratePositions(D: Dims, bodies: readonly Body[], constants: Float64Array, scratch: RotorStepScratch): number {
+  const n = D.n;
+  const h = constants[STEP_H]!;
+  for (let b = 0; b < bodies.length; b += 1) {
+    const body = bodies[b]!;
+    const motion = body.motion;
+    if (motion === MOTION_STATIC) continue;
+    const x = body.x;
+    const v = body.v;
+    for (let i = 0; i < n; i += 1) x[i] = x[i]! + h * v[i]!;
+    if (motion === MOTION_DYNAMIC) {
+      // A body with no angular momentum has ω = 0 and keeps its rotor.
+      if (!isZero(body.L)) {
+        advanceRotor(D, body.R, body.w, body.L, body.invInertia, constants, scratch);
+      }
+    } else if (!isZero(body.w)) {
+      advanceRotorKinematic(D, body.R, body.w, constants, scratch);
+      if (body.massValue > 0) momentumFromAngularVelocity(D, body.L, body.R, body.inertia, body.w, scratch.tmp);
+    }
+    if (!isStateFinite(body)) return b;
+  }
+  return -1;
+}

@@ -6,6 +6,7 @@
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionBox, CollisionSphere } from './narrowphase-shapes.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
+import { pointToLocal } from './manifold.js';
 
 /**
  * One contact between a box (A) and a ball (B), normal from the box to the ball.
@@ -31,17 +32,12 @@ export function collideBoxSphere(
   scratch: NarrowphaseScratch,
 ): boolean {
   const M = poseA.M;
-  const xa = poseA.x;
   const xb = poseB.x;
   const half = a.halfExtents;
   const rho = b.radius;
   const local = scratch.v0;
   const d = scratch.v1;
-  for (let c = 0; c < n; c += 1) {
-    let s = 0;
-    for (let i = 0; i < n; i += 1) s += M[i * n + c] * (xb[i] - xa[i]);
-    local[c] = s;
-  }
+  pointToLocal(local, n, poseA, poseB.x);
   let d2 = 0;
   let code = 0;
   let digit = 1;

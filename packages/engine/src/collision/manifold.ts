@@ -45,6 +45,21 @@ export function createPose(n: number): Pose {
 }
 
 /**
+ * out = Mᵀ (p − x): the world point `p` in the local frame of `pose` (unchecked, no allocation).
+ * `out` must not alias `p` or the pose's arrays.
+ */
+export function pointToLocal(out: Float64Array, n: number, pose: Pose, p: Float64Array): Float64Array {
+  const M = pose.M;
+  const x = pose.x;
+  for (let c = 0; c < n; c += 1) {
+    let s = 0;
+    for (let i = 0; i < n; i += 1) s += M[i * n + c] * (p[i] - x[i]);
+    out[c] = s;
+  }
+  return out;
+}
+
+/**
  * A contact manifold between two shapes, preallocated and reused: the pair functions overwrite
  * it and allocate nothing. Only the first `count` entries of the per-point arrays are meaningful.
  */

@@ -7,6 +7,7 @@ import type { Manifold, Pose } from './manifold.js';
 import type { CollisionMesh, CollisionSphere } from './narrowphase-shapes.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { closestPointOnSimplexKernel } from './simplex-closest.js';
+import { pointToLocal } from './manifold.js';
 
 /** Flag bit of the id of a contact whose ball centre is inside the mesh (id = flag | facet). */
 export const MESH_INSIDE_ID = 0x80000000;
@@ -37,16 +38,11 @@ export function collideMeshSphere(
   scratch: NarrowphaseScratch,
 ): boolean {
   const M = poseA.M;
-  const xa = poseA.x;
   const xb = poseB.x;
   const c = scratch.v0;
   const nearest = scratch.v1;
   const local = scratch.v2;
-  for (let k = 0; k < n; k += 1) {
-    let s = 0;
-    for (let i = 0; i < n; i += 1) s += M[i * n + k] * (xb[i] - xa[i]);
-    c[k] = s;
-  }
+  pointToLocal(c, n, poseA, poseB.x);
   const normals = a.facetNormals;
   const offsets = a.facetOffsets;
   const facets = a.facets;

@@ -6,6 +6,7 @@
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionSphere, CollisionTorus } from './narrowphase-shapes.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
+import { pointToLocal } from './manifold.js';
 
 /**
  * One contact between a torus (A; core circle of radius R in its local plane (i, j), tube
@@ -29,17 +30,12 @@ export function collideTorusSphere(
   scratch: NarrowphaseScratch,
 ): boolean {
   const M = poseA.M;
-  const xa = poseA.x;
   const xb = poseB.x;
   const s = scratch.v0;
   const R = a.majorRadius;
   const pi = a.planeI;
   const pj = a.planeJ;
-  for (let c = 0; c < n; c += 1) {
-    let v = 0;
-    for (let i = 0; i < n; i += 1) v += M[i * n + c] * (xb[i] - xa[i]);
-    s[c] = v;
-  }
+  pointToLocal(s, n, poseA, poseB.x);
   const rho = Math.sqrt(s[pi] * s[pi] + s[pj] * s[pj]);
   const qi = rho > 0 ? (R * s[pi]) / rho : R;
   const qj = rho > 0 ? (R * s[pj]) / rho : 0;

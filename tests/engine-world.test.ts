@@ -3,7 +3,7 @@
  * argument checks (the world is left exactly as it was), and the non-finite policy.
  */
 import { describe, expect, it } from 'vitest';
-import { Body, dims, HalfSpace, HyperBox, HyperSphere, NonFiniteStateError, World } from '@physin/engine';
+import { Body, dims, HalfSpace, HyperBox, HyperSphere, HyperTorus, NonFiniteStateError, World } from '@physin/engine';
 import type { Dims } from '@physin/engine';
 import { rotorApplyBivectorInverse, rotorExp, rotorFromPlane, rotorMul } from '@physin/algebra';
 import { randomArray, seeded } from './support/random.js';
@@ -165,6 +165,20 @@ describe('bad input leaves the world exactly as it was', () => {
     ['applyTorque of length 4', (_w, b) => b.applyTorque([1, 2, 3, 4]), 'TypeError', /'t'/],
     ['applyCentralImpulse with Infinity', (_w, b) => b.applyCentralImpulse([Infinity, 0, 0, 0]), 'RangeError', /'j'/],
     ['setMass(-2)', (_w, b) => b.setMass(-2), 'RangeError', /'m'/],
+    ['setAngularVelocity of length 4 (a vector, not a bivector)', (_w, b) => b.setAngularVelocity([0, 0, 1, 0]), 'TypeError', /'w'/],
+    ['applyForce with an arm of length 5', (_w, b) => b.applyForce([1, 0, 0, 0], [0, 0, 0, 0, 1]), 'TypeError', /'r'/],
+    ['addBody of a body that belongs to another world', (w) => {
+      const other = new World({ dimensions: 4 });
+      w.addBody(other.addBody(new Body(D, { shape: HyperSphere(1) })));
+    }, 'RangeError', /another world/],
+    // Building a body or a shape with bad arguments throws before anything reaches the world.
+    ['new Body with a negative mass', () => new Body(D, { shape: HyperSphere(1), mass: -1 }), 'RangeError', /'mass'/],
+    ['new Body with a position of length 3', () => new Body(D, { shape: HyperSphere(1), position: [0, 1, 0] }), 'TypeError', /'position'/],
+    ['new Body with a non-finite velocity', () => new Body(D, { shape: HyperSphere(1), velocity: [0, NaN, 0, 0] }), 'RangeError', /'velocity'/],
+    ['new Body with a 3D box in a 4D world', () => new Body(D, { shape: HyperBox(dims(3), [1, 1, 1]) }), 'RangeError', /'shape'/],
+    ['HyperBox with a negative half-extent', () => HyperBox(D, [0.5, -0.5, 0.5, 0.5]), 'RangeError', /'halfExtents'/],
+    ['HyperTorus with minor radius >= major radius', () => HyperTorus(D, 1, 1, 0), 'RangeError', /'minorRadius'/],
+    ['HyperTorus with a plane axis out of range', () => HyperTorus(D, 2, 0.5, [0, 4]), 'RangeError', /'plane\[1\]' must/],
   ];
   for (const [what, call, kind, message] of calls) {
     it(`${what}: ${kind} naming the argument; snapshot of every body, gravity and params unchanged`, () => {

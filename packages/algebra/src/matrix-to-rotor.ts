@@ -30,12 +30,19 @@ export const ORTHOGONALITY_LIMIT = 1e-6;
 
 /** Working storage of the rebuild for one dimension (allocate once, reuse). */
 export interface MatrixToRotorScratch {
+  /** n×n row-major work copy of the matrix; its columns are reflected toward their axes. */
   readonly w: Float64Array;
+  /** n flags: 1 once the column (and axis) of that index is in place. */
   readonly fixed: Uint8Array;
+  /** n numbers: the unit normal of the current reflection. */
   readonly u: Float64Array;
+  /** n numbers: the previous reflection normal, waiting to be paired with the next one. */
   readonly pending: Float64Array;
+  /** r numbers: the rotor built so far from pairs of reflections. */
   readonly v: Float64Array;
+  /** r numbers: product scratch. */
   readonly t: Float64Array;
+  /** r numbers: a scalar-plus-bivector element (a pair of reflections, or the residual rotor). */
   readonly e: Float64Array;
 }
 

@@ -316,6 +316,6 @@ describe('dispatch', () => {
     expect(() => createNarrowphaseScratch(9)).toThrow(RangeError);
     expect(() => createNarrowphaseScratch(3, { axisTolerance: -1 })).toThrow(/axisTolerance/);
     expect(() => createNarrowphaseScratch(3, { torusRingPoints: 2 })).toThrow(RangeError);
-    expect([2, 3, 4, 5, 6, 7, 8].map(maxManifoldPoints)).toEqual([2, 4, 8, 8, 10, 12, 14]);
+    expect([2, 3, 4, 5, 6, 7, 8].map(maxManifoldPoints)).toEqual([2, 4, 8, 16, 32, 32, 32]);
   });
 });

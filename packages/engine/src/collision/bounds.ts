@@ -5,7 +5,15 @@
  * added: along world axis k the box reaches the shape's support point in direction ±e_k.
  */
 import { checkDimension, checkNumber, checkOutput, checkPose, checkShape } from './query-checks.js';
-import type { QueryShape } from './query-shapes.js';
+import type {
+  BoxGeometry,
+  ConvexMeshGeometry,
+  HalfSpaceGeometry,
+  QueryShape,
+  SphereGeometry,
+  TorusGeometry,
+} from './query-shapes.js';
+import { shapeKind } from './shape-kind.js';
 
 /**
  * Writes the world bounding box of `shape` placed at pose (x, M), grown by `margin` on every
@@ -49,7 +57,8 @@ export function computeBounds(
 
 /**
  * {@link computeBounds} without any argument check: the engine's per-step kernel for data it
- * validated when the body entered the world. Allocates nothing.
+ * validated when the body entered the world. Allocates nothing. (The kind is read through
+ * {@link shapeKind}, so the number fields of each kind load unboxed; see shape-kind.ts.)
  */
 export function computeBoundsUnchecked(
   outMin: Float64Array,
@@ -60,9 +69,9 @@ export function computeBoundsUnchecked(
   M: ArrayLike<number>,
   margin: number,
 ): Float64Array {
-  switch (shape.kind) {
+  switch (shapeKind(shape)) {
     case 'box': {
-      const a = shape.halfExtents;
+      const a = (shape as BoxGeometry).halfExtents;
       for (let k = 0; k < n; k += 1) {
         let e = 0;
         const row = k * n;
@@ -74,7 +83,7 @@ export function computeBoundsUnchecked(
       return outMin;
     }
     case 'sphere': {
-      const e = shape.radius + margin;
+      const e = (shape as SphereGeometry).radius + margin;
       for (let k = 0; k < n; k += 1) {
         outMin[k] = x[k]! - e;
         outMax[k] = x[k]! + e;
@@ -82,10 +91,11 @@ export function computeBoundsUnchecked(
       return outMin;
     }
     case 'torus': {
-      const R = shape.majorRadius;
-      const r = shape.minorRadius;
-      const pi = shape.planeI;
-      const pj = shape.planeJ;
+      const torus = shape as TorusGeometry;
+      const R = torus.majorRadius;
+      const r = torus.minorRadius;
+      const pi = torus.planeI;
+      const pj = torus.planeJ;
       for (let k = 0; k < n; k += 1) {
         const u = M[k * n + pi]!;
         const v = M[k * n + pj]!;
@@ -97,7 +107,7 @@ export function computeBoundsUnchecked(
       return outMin;
     }
     case 'mesh': {
-      const vs = shape.vertices;
+      const vs = (shape as ConvexMeshGeometry).vertices;
       const count = vs.length / n;
       for (let k = 0; k < n; k += 1) {
         let lo = Infinity;
@@ -116,7 +126,7 @@ export function computeBoundsUnchecked(
       return outMin;
     }
     case 'halfspace': {
-      halfSpaceBounds(outMin, outMax, n, shape.normal, shape.offset, x, M, margin);
+      halfSpaceBounds(outMin, outMax, n, shape as HalfSpaceGeometry, x, M, margin);
       return outMin;
     }
   }
@@ -127,12 +137,14 @@ function halfSpaceBounds(
   outMin: Float64Array,
   outMax: Float64Array,
   n: number,
-  normal: ArrayLike<number>,
-  offset: number,
+  shape: HalfSpaceGeometry,
   x: ArrayLike<number>,
   M: ArrayLike<number>,
   margin: number,
 ): void {
+  // the shape, not its offset, is passed: a number argument of a call V8 does not inline is boxed
+  const normal = shape.normal;
+  const offset = shape.offset;
   let axis = -1;
   let nonzero = 0;
   let wk = 0;

@@ -37,6 +37,13 @@
 import type { Manifold, Pose } from './manifold.js';
 import { candidateSlot } from './manifold-reduce.js';
 import type { CollisionBox } from './narrowphase-shapes.js';
+import {
+  NARROWPHASE_MARGIN,
+  SCALAR_CANDIDATE,
+  SCALAR_CLIP_EPS,
+  SCALAR_CLIP_EPS_SIGMA,
+  SCALAR_CLIP_Z0,
+} from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { luFactorAt, luSolveAt } from './small-linear.js';
 
@@ -63,6 +70,27 @@ export function clipBoxFaces(
   margin: number,
   scratch: NarrowphaseScratch,
 ): void {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  clipBoxFacesKernel(n, ref, refPose, refAxis, refSign, inc, incPose, refIsB, scratch);
+}
+
+/**
+ * {@link clipBoxFaces} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`; `refSign`
+ * must be the integer 1 or −1. Unchecked hot-path kernel; allocates nothing.
+ */
+export function clipBoxFacesKernel(
+  n: number,
+  ref: CollisionBox,
+  refPose: Pose,
+  refAxis: number,
+  refSign: number,
+  inc: CollisionBox,
+  incPose: Pose,
+  refIsB: number,
+  scratch: NarrowphaseScratch,
+): void {
+  const scalars = scratch.scalars;
+  const margin = scalars[NARROWPHASE_MARGIN];
   const d = n - 1;
   const MR = refPose.M;
   const MI = incPose.M;
@@ -95,7 +123,8 @@ export function clipBoxFaces(
   let scale = 0;
   for (let c = 0; c < n; c += 1) scale = Math.max(scale, ha[c], hb[c]);
   const eps = scratch.clipTolerance * scale;
-  const epsSigma = scratch.clipTolerance;
+  scalars[SCALAR_CLIP_EPS] = eps;
+  scalars[SCALAR_CLIP_EPS_SIGMA] = scratch.clipTolerance;
 
   for (let i = 0; i < n; i += 1) {
     f[i] = incPose.x[i] + incSign * hb[incAxis] * MI[i * n + incAxis];
@@ -116,6 +145,7 @@ export function clipBoxFaces(
   }
   let z0 = 0;
   for (let i = 0; i < n; i += 1) z0 += nref[i] * X[i];
+  scalars[SCALAR_CLIP_Z0] = z0;
   for (let l = 0; l < d; l += 1) {
     let s = 0;
     for (let i = 0; i < n; i += 1) s += U[l * n + i] * X[i];
@@ -154,7 +184,7 @@ export function clipBoxFaces(
         radius[l] = r;
       }
       // the a×a systems G[K, F] are factorised on first use only (0 = not yet, 1 = ok, 2 = singular)
-      luState.fill(0);
+      for (let K = 0; K <= all; K += 1) luState[K] = 0;
       const fixedP = all & ~F;
       // every sign choice of P's fixed coordinates (submasks of fixedP: bit set = +1)
       for (let sp = fixedP; ; sp = (sp - 1) & fixedP) {
@@ -211,7 +241,7 @@ export function clipBoxFaces(
                 codeQ += (sq & (1 << l) ? 2 : 1) * 3 ** l;
               }
               if (a > 0) luSolveAt(a, lu, mo, luPiv, K * d, rhs, sol);
-              if (appendCrossing(n, d, a, K, sol, free, sigma, centre, G, gz, z0, half, f, nref, H, X, eps, epsSigma, margin, cand)) {
+              if (appendCrossing(n, d, a, K, sol, free, sigma, centre, G, gz, half, f, nref, H, X, scalars, cand)) {
                 cand.ids[cand.count - 1] = idBase + codeP + pow3d * codeQ;
               }
               if (sq === 0) break;
@@ -227,7 +257,8 @@ export function clipBoxFaces(
 /**
  * Takes the solved free parameters `sol` of one (P face, Q face) meeting, checks that it is a
  * vertex of P ∩ Q with separation < margin and not a copy of a held candidate, and appends it
- * (point and separation; the caller writes the id). Returns whether it appended.
+ * (point and separation; the caller writes the id). Returns whether it appended. z0, the
+ * tolerances and the margin are read from `scalars` (see {@link clipBoxFacesKernel}).
  */
 function appendCrossing(
   n: number,
@@ -240,17 +271,18 @@ function appendCrossing(
   centre: Float64Array,
   G: Float64Array,
   gz: Float64Array,
-  z0: number,
   half: Float64Array,
   f: Float64Array,
   nref: Float64Array,
   H: Float64Array,
   X: Float64Array,
-  eps: number,
-  epsSigma: number,
-  margin: number,
+  scalars: Float64Array,
   cand: Manifold,
 ): boolean {
+  const z0 = scalars[SCALAR_CLIP_Z0];
+  const eps = scalars[SCALAR_CLIP_EPS];
+  const epsSigma = scalars[SCALAR_CLIP_EPS_SIGMA];
+  const margin = scalars[NARROWPHASE_MARGIN];
   for (let c = 0; c < a; c += 1) {
     const s = sol[c];
     if (s < -1 - epsSigma || s > 1 + epsSigma) return false;
@@ -280,13 +312,14 @@ function appendCrossing(
     }
     if (dist2 <= eps2) return false;
   }
+  scalars[SCALAR_CANDIDATE] = z;
   if (cand.count >= cand.capacity) {
     // full: replace the shallowest held point when this one is deeper
-    const slot = candidateSlot(cand, z);
+    const slot = candidateSlot(cand, scalars, SCALAR_CANDIDATE);
     if (slot < 0) return false;
     swapToEnd(cand, slot, n);
   } else {
-    candidateSlot(cand, z);
+    candidateSlot(cand, scalars, SCALAR_CANDIDATE);
   }
   const o = (cand.count - 1) * n;
   for (let i = 0; i < n; i += 1) cand.points[o + i] = X[i];

@@ -30,11 +30,18 @@
  *
  * @module
  */
-import { boxBoxSat3 } from './box-box-sat3.js';
+import { boxBoxSat3Kernel } from './box-box-sat3.js';
 import { checkNarrowphaseDimension } from './manifold.js';
 import type { Pose } from './manifold.js';
 import type { CollisionBox } from './narrowphase-shapes.js';
-import { SAT_EDGE, SAT_FACE_A, SAT_FACE_B, SAT_SEPARATED } from './narrowphase-scratch.js';
+import {
+  NARROWPHASE_MARGIN,
+  SAT_EDGE,
+  SAT_FACE_A,
+  SAT_FACE_B,
+  SAT_SEPARATED,
+  SCALAR_AXIS_TOLERANCE,
+} from './narrowphase-scratch.js';
 import type { NarrowphaseScratch, SatResult } from './narrowphase-scratch.js';
 
 /** The candidate axes of the box–box SAT in n dimensions, as pairs of axis bitmasks. */
@@ -119,9 +126,13 @@ export function boxBoxSat(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
-  return n === 3
-    ? boxBoxSat3(a, poseA, b, poseB, margin, scratch)
-    : boxBoxSatGeneral(n, a, poseA, b, poseB, margin, scratch);
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return boxBoxSatKernel(n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link boxBoxSat} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`. */
+export function boxBoxSatKernel(n: number, a: CollisionBox, poseA: Pose, b: CollisionBox, poseB: Pose, scratch: NarrowphaseScratch): boolean {
+  return n === 3 ? boxBoxSat3Kernel(a, poseA, b, poseB, scratch) : boxBoxSatGeneralKernel(n, a, poseA, b, poseB, scratch);
 }
 
 /**
@@ -159,8 +170,22 @@ export function boxBoxSatGeneral(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return boxBoxSatGeneralKernel(n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link boxBoxSatGeneral} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`. */
+export function boxBoxSatGeneralKernel(
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
   prepareBoxPair(n, poseA, poseB, scratch);
   const { C, absC, t, rows, cols, sat, scalars } = scratch;
+  const margin = scalars[NARROWPHASE_MARGIN];
   const ha = a.halfExtents;
   const hb = b.halfExtents;
   const L = scratch.v0;
@@ -172,7 +197,11 @@ export function boxBoxSatGeneral(
     let rb = 0;
     for (let j = 0; j < n; j += 1) rb += hb[j] * absC[i * n + j];
     const s = Math.abs(t[i]) - ha[i] - rb;
-    if (s > margin) return separated(sat, s);
+    if (s > margin) {
+      sat.kind = SAT_SEPARATED;
+      sat.separation = s;
+      return false;
+    }
     if (s > sepA) {
       sepA = s;
       axisA = i;
@@ -189,7 +218,11 @@ export function boxBoxSatGeneral(
       d += t[i] * C[i * n + j];
     }
     const s = Math.abs(d) - ra - hb[j];
-    if (s > margin) return separated(sat, s);
+    if (s > margin) {
+      sat.kind = SAT_SEPARATED;
+      sat.separation = s;
+      return false;
+    }
     if (s > sepB) {
       sepB = s;
       axisB = j;
@@ -199,11 +232,15 @@ export function boxBoxSatGeneral(
   const table = satAxisTable(n);
   let sepE = -Infinity;
   let edgeIndex = -1;
-  const tol = scratch.axisTolerance;
+  scalars[SCALAR_AXIS_TOLERANCE] = scratch.axisTolerance;
   for (let e = 2 * n; e < table.count; e += 1) {
-    if (!mixedAxisSeparation(n, table.maskA[e], table.maskB[e], ha, hb, C, t, rows, cols, L, tol, scalars)) continue;
+    if (!mixedAxisSeparation(n, table.maskA[e], table.maskB[e], ha, hb, C, t, rows, cols, L, scalars)) continue;
     const s = scalars[0];
-    if (s > margin) return separated(sat, s);
+    if (s > margin) {
+      sat.kind = SAT_SEPARATED;
+      sat.separation = s;
+      return false;
+    }
     if (s > sepE) {
       sepE = s;
       edgeIndex = e;
@@ -219,7 +256,7 @@ export function boxBoxSatGeneral(
   }
   if (edgeIndex >= 0 && sepE > faceSep + tie) {
     // recompute the winner's normal (the loop kept only its index)
-    mixedAxisSeparation(n, table.maskA[edgeIndex], table.maskB[edgeIndex], ha, hb, C, t, rows, cols, L, tol, scalars);
+    mixedAxisSeparation(n, table.maskA[edgeIndex], table.maskB[edgeIndex], ha, hb, C, t, rows, cols, L, scalars);
     let d = 0;
     for (let i = 0; i < n; i += 1) d += t[i] * L[i];
     const sign = d >= 0 ? 1 : -1;
@@ -231,7 +268,7 @@ export function boxBoxSatGeneral(
     sat.maskB = table.maskB[edgeIndex];
   } else if (sat.kind === SAT_FACE_A) {
     const sign = t[axisA] >= 0 ? 1 : -1;
-    sat.localNormal.fill(0);
+    for (let i = 0; i < n; i += 1) sat.localNormal[i] = 0;
     sat.localNormal[axisA] = sign;
     sat.separation = sepA;
     sat.axis = axisA;
@@ -253,9 +290,9 @@ export function boxBoxSatGeneral(
 
 /**
  * The separation of the boxes along the mixed candidate (maskA, maskB): returns false when the
- * candidate is degenerate (its cross product is shorter than `tolerance`), else writes the
- * separation into result[0] and the unit axis (A's frame, unoriented) into L and returns true.
- * Uses result[1]. Unchecked; allocates nothing.
+ * candidate is degenerate (its cross product is shorter than the tolerance read from
+ * result[SCALAR_AXIS_TOLERANCE]), else writes the separation into result[0] and the unit axis
+ * (A's frame, unoriented) into L and returns true. Uses result[1]. Unchecked; allocates nothing.
  */
 export function mixedAxisSeparation(
   n: number,
@@ -268,9 +305,9 @@ export function mixedAxisSeparation(
   rows: Float64Array,
   cols: Int32Array,
   L: Float64Array,
-  tolerance: number,
   result: Float64Array,
 ): boolean {
+  const tolerance = result[SCALAR_AXIS_TOLERANCE];
   let m = 0;
   for (let i = 0; i < n; i += 1) {
     if (maskA & (1 << i)) L[i] = 0;

@@ -7,7 +7,7 @@
  */
 import type { Pose } from './manifold.js';
 import type { CollisionBox } from './narrowphase-shapes.js';
-import { SAT_EDGE, SAT_FACE_A, SAT_FACE_B, SAT_SEPARATED } from './narrowphase-scratch.js';
+import { NARROWPHASE_MARGIN, SAT_EDGE, SAT_FACE_A, SAT_FACE_B, SAT_SEPARATED } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 
 /**
@@ -22,6 +22,13 @@ export function boxBoxSat3(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return boxBoxSat3Kernel(a, poseA, b, poseB, scratch);
+}
+
+/** {@link boxBoxSat3} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`. */
+export function boxBoxSat3Kernel(a: CollisionBox, poseA: Pose, b: CollisionBox, poseB: Pose, scratch: NarrowphaseScratch): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const MA = poseA.M;
   const MB = poseB.M;
   const xa = poseA.x;
@@ -56,7 +63,11 @@ export function boxBoxSat3(
   for (let i = 0; i < 3; i += 1) {
     const ai = i === 0 ? a0 : i === 1 ? a1 : a2;
     const s = Math.abs(t[i]) - ai - (b0 * absC[i * 3] + b1 * absC[i * 3 + 1] + b2 * absC[i * 3 + 2]);
-    if (s > margin) return separated3(sat, s);
+    if (s > margin) {
+      sat.kind = SAT_SEPARATED;
+      sat.separation = s;
+      return false;
+    }
     if (s > sepA) {
       sepA = s;
       axisA = i;
@@ -68,7 +79,11 @@ export function boxBoxSat3(
     const bj = j === 0 ? b0 : j === 1 ? b1 : b2;
     const d = t0 * C[j] + t1 * C[3 + j] + t2 * C[6 + j];
     const s = Math.abs(d) - (a0 * absC[j] + a1 * absC[3 + j] + a2 * absC[6 + j]) - bj;
-    if (s > margin) return separated3(sat, s);
+    if (s > margin) {
+      sat.kind = SAT_SEPARATED;
+      sat.separation = s;
+      return false;
+    }
     if (s > sepB) {
       sepB = s;
       axisB = j;
@@ -118,7 +133,11 @@ export function boxBoxSat3(
         rb += bk * Math.abs(C[k] * l0 + C[3 + k] * l1 + C[6 + k] * l2);
       }
       const s = Math.abs(d) - ra - rb;
-      if (s > margin) return separated3(sat, s);
+      if (s > margin) {
+        sat.kind = SAT_SEPARATED;
+        sat.separation = s;
+        return false;
+      }
       if (s > sepE) {
         sepE = s;
         edgeI = i;
@@ -170,10 +189,4 @@ export function boxBoxSat3(
   const w = sat.normal;
   for (let r = 0; r < 3; r += 1) w[r] = MA[r * 3] * n[0] + MA[r * 3 + 1] * n[1] + MA[r * 3 + 2] * n[2];
   return true;
-}
-
-function separated3(sat: NarrowphaseScratch['sat'], separation: number): false {
-  sat.kind = SAT_SEPARATED;
-  sat.separation = separation;
-  return false;
 }

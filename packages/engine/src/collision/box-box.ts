@@ -5,12 +5,12 @@
  *
  * @module
  */
-import { boxBoxSat } from './box-box-sat.js';
-import { clipBoxFaces } from './box-box-clip.js';
+import { boxBoxSatKernel } from './box-box-sat.js';
+import { clipBoxFacesKernel } from './box-box-clip.js';
 import type { Manifold, Pose } from './manifold.js';
 import { clearCandidates, reduceCandidates } from './manifold-reduce.js';
 import type { CollisionBox } from './narrowphase-shapes.js';
-import { SAT_EDGE, SAT_FACE_A } from './narrowphase-scratch.js';
+import { NARROWPHASE_MARGIN, SAT_EDGE, SAT_FACE_A } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { luFactor, luSolve } from './small-linear.js';
 
@@ -44,7 +44,21 @@ export function collideBoxBox(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
-  if (!boxBoxSat(n, a, poseA, b, poseB, margin, scratch)) {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideBoxBoxKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideBoxBox} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideBoxBoxKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  if (!boxBoxSatKernel(n, a, poseA, b, poseB, scratch)) {
     out.count = 0;
     return false;
   }
@@ -53,18 +67,19 @@ export function collideBoxBox(
   const cand = scratch.candidates;
   clearCandidates(cand);
   if (sat.kind === SAT_FACE_A) {
-    clipBoxFaces(n, a, poseA, sat.axis, sat.localNormal[sat.axis], b, poseB, 0, margin, scratch);
+    // the local normal is ±1 on A's face axis: pass its sign as an integer
+    clipBoxFacesKernel(n, a, poseA, sat.axis, sat.localNormal[sat.axis] > 0 ? 1 : -1, b, poseB, 0, scratch);
   } else {
     // B's face normal toward A is −normal; its sign along B's axis
     let s = 0;
     for (let i = 0; i < n; i += 1) s += poseB.M[i * n + sat.axis] * sat.normal[i];
-    clipBoxFaces(n, b, poseB, sat.axis, s > 0 ? -1 : 1, a, poseA, 1, margin, scratch);
+    clipBoxFacesKernel(n, b, poseB, sat.axis, s > 0 ? -1 : 1, a, poseA, 1, scratch);
   }
   if (cand.count === 0) {
     out.count = 0;
     return false;
   }
-  return reduceCandidates(out, n, cand, sat.normal, scratch.reduceDistance);
+  return reduceCandidates(out, n, cand, sat.normal, scratch);
 }
 
 /** The one-point manifold of a mixed SAT axis (see {@link collideBoxBox}). */
@@ -131,7 +146,7 @@ function mixedAxisContact(
     }
   }
   if (luFactor(m, mat, piv, EDGE_PIVOT_TOLERANCE)) luSolve(m, mat, piv, rhs, sol);
-  else sol.fill(0);
+  else for (let p = 0; p < sol.length; p += 1) sol[p] = 0;
   // midpoint of cA + V_A σ_A and cB + V_B σ_B, in A's frame, then to the world
   const mid = scratch.v4;
   for (let i = 0; i < n; i += 1) mid[i] = (cA[i] + cB[i]) / 2;

@@ -6,6 +6,7 @@
 import type { Manifold, Pose } from './manifold.js';
 import { candidateSlot, clearCandidates, reduceCandidates } from './manifold-reduce.js';
 import type { CollisionBox, CollisionHalfSpace } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN, SCALAR_CANDIDATE } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { worldPlane } from './world-plane.js';
 
@@ -29,6 +30,21 @@ export function collideBoxHalfSpace(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideBoxHalfSpaceKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideBoxHalfSpace} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideBoxHalfSpaceKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionHalfSpace,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const N = scratch.v0;
   const g = scratch.v1;
   worldPlane(N, n, b, poseB, scratch.scalars, 2);
@@ -57,7 +73,8 @@ export function collideBoxHalfSpace(
     let height = h0;
     for (let c = 0; c < n; c += 1) height += mask & (1 << c) ? g[c] : -g[c];
     if (!(height < margin)) continue;
-    const slot = candidateSlot(cand, height);
+    scratch.scalars[SCALAR_CANDIDATE] = height;
+    const slot = candidateSlot(cand, scratch.scalars, SCALAR_CANDIDATE);
     if (slot < 0) continue;
     const o = slot * n;
     for (let i = 0; i < n; i += 1) {
@@ -68,5 +85,5 @@ export function collideBoxHalfSpace(
     cand.ids[slot] = mask;
   }
   for (let i = 0; i < n; i += 1) scratch.v2[i] = -N[i];
-  return reduceCandidates(out, n, cand, scratch.v2, scratch.reduceDistance);
+  return reduceCandidates(out, n, cand, scratch.v2, scratch);
 }

@@ -5,6 +5,7 @@
  */
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionBox, CollisionSphere } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { pointToLocal } from './manifold.js';
 
@@ -31,6 +32,21 @@ export function collideBoxSphere(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideBoxSphereKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideBoxSphere} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideBoxSphereKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionSphere,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const M = poseA.M;
   const xb = poseB.x;
   const half = a.halfExtents;

@@ -2,7 +2,10 @@
  * Collecting raw contact candidates and reducing them to a manifold's bound.
  *
  * Reduction: the deepest candidate first (it carries the penetration the solver must remove),
- * then, repeatedly, the candidate farthest from every point kept so far, distance measured in
+ * where candidates within `featureTieTolerance` of the deepest count as equally deep and the one
+ * of lowest feature id is taken — a face resting flat has many corners at the same depth up to
+ * rounding, and picking among them by noise would change the kept set (and lose the warm-start
+ * impulses) every step; then, repeatedly, the candidate farthest from every point kept so far, distance measured in
  * the tangent space (the component along the normal ignored). Farthest-point order picks the
  * extremes of the contact region along its tangent directions first and keeps antipodal pairs of
  * a symmetric region, so the kept set spans the region and its hull contains the centre. Ties go
@@ -13,6 +16,7 @@
  * @module
  */
 import type { Manifold } from './manifold.js';
+import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 
 /** Empties a candidate buffer. */
 export function clearCandidates(buf: Manifold): void {
@@ -20,12 +24,14 @@ export function clearCandidates(buf: Manifold): void {
 }
 
 /**
- * Reserves a slot for a candidate of separation `separation` and returns its index, or −1 when
+ * Reserves a slot for a candidate of separation `values[at]` and returns its index, or −1 when
  * the buffer is full and every held candidate is at least as deep (the shallowest is replaced
  * otherwise). The caller writes the point (n numbers at index·n) and the id; the separation is
- * written here.
+ * written here. (The separation travels in an array: a double argument of a call V8 does not
+ * inline would be boxed.)
  */
-export function candidateSlot(buf: Manifold, separation: number): number {
+export function candidateSlot(buf: Manifold, values: Float64Array, at: number): number {
+  const separation = values[at];
   if (buf.count < buf.capacity) {
     const index = buf.count;
     buf.count += 1;
@@ -43,15 +49,17 @@ export function candidateSlot(buf: Manifold, separation: number): number {
  * Writes the candidates into `out` with `normal` (unit, A to B), keeping at most `out.capacity`
  * points as described in the module comment. Returns true when at least one point was written.
  *
- * @param distance - scratch of at least `candidates.count` numbers.
+ * @param scratch - its `reduceDistance` (at least `candidates.count` numbers) is used, and its
+ *   `featureTieTolerance` decides which depths tie.
  */
 export function reduceCandidates(
   out: Manifold,
   n: number,
   candidates: Manifold,
   normal: ArrayLike<number>,
-  distance: Float64Array,
+  scratch: NarrowphaseScratch,
 ): boolean {
+  const distance = scratch.reduceDistance;
   for (let c = 0; c < n; c += 1) out.normal[c] = normal[c];
   const count = candidates.count;
   const cap = out.capacity;
@@ -60,8 +68,13 @@ export function reduceCandidates(
     out.count = count;
     return count > 0;
   }
+  const seps = candidates.separations;
   let deepest = 0;
-  for (let p = 1; p < count; p += 1) if (candidates.separations[p] < candidates.separations[deepest]) deepest = p;
+  for (let p = 1; p < count; p += 1) if (seps[p] < seps[deepest]) deepest = p;
+  const tie = seps[deepest] + scratch.featureTieTolerance;
+  for (let p = 0; p < count; p += 1) {
+    if (seps[p] <= tie && candidates.ids[p] < candidates.ids[deepest]) deepest = p;
+  }
   const pts = candidates.points;
   for (let p = 0; p < count; p += 1) distance[p] = Infinity;
   let chosen = deepest;

@@ -6,7 +6,7 @@
 import type { Manifold, Pose } from './manifold.js';
 import { candidateSlot, clearCandidates, reduceCandidates } from './manifold-reduce.js';
 import type { CollisionHalfSpace, CollisionMesh } from './narrowphase-shapes.js';
-import { ensureCandidateCapacity } from './narrowphase-scratch.js';
+import { ensureCandidateCapacity, NARROWPHASE_MARGIN, SCALAR_CANDIDATE } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { worldPlane } from './world-plane.js';
 
@@ -29,6 +29,21 @@ export function collideMeshHalfSpace(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideMeshHalfSpaceKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideMeshHalfSpace} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideMeshHalfSpaceKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionMesh,
+  poseA: Pose,
+  b: CollisionHalfSpace,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const N = scratch.v0;
   const Nl = scratch.v1;
   worldPlane(N, n, b, poseB, scratch.scalars, 2);
@@ -50,7 +65,8 @@ export function collideMeshHalfSpace(
     let height = h0;
     for (let c = 0; c < n; c += 1) height += Nl[c] * v[k * n + c];
     if (!(height < margin)) continue;
-    const slot = candidateSlot(cand, height);
+    scratch.scalars[SCALAR_CANDIDATE] = height;
+    const slot = candidateSlot(cand, scratch.scalars, SCALAR_CANDIDATE);
     if (slot < 0) continue;
     for (let i = 0; i < n; i += 1) {
       let p = xa[i] - (height / 2) * N[i];
@@ -64,5 +80,5 @@ export function collideMeshHalfSpace(
     return false;
   }
   for (let c = 0; c < n; c += 1) scratch.v2[c] = -N[c];
-  return reduceCandidates(out, n, cand, scratch.v2, scratch.reduceDistance);
+  return reduceCandidates(out, n, cand, scratch.v2, scratch);
 }

@@ -5,6 +5,7 @@
  */
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionMesh, CollisionSphere } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { closestPointOnSimplexKernel } from './simplex-closest.js';
 import { pointToLocal } from './manifold.js';
@@ -37,6 +38,21 @@ export function collideMeshSphere(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideMeshSphereKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideMeshSphere} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideMeshSphereKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionMesh,
+  poseA: Pose,
+  b: CollisionSphere,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const M = poseA.M;
   const xb = poseB.x;
   const c = scratch.v0;

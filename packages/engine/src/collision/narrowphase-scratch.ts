@@ -7,6 +7,7 @@
  */
 import { checkNarrowphaseDimension, createManifold } from './manifold.js';
 import type { Manifold } from './manifold.js';
+import { trainShapeAccessors } from './shape-kind.js';
 
 /** Tolerances of the narrowphase. Every threshold the pair functions use is one of these. */
 export interface NarrowphaseOptions {
@@ -42,6 +43,29 @@ export const DEFAULT_FEATURE_TIE_TOLERANCE = 5e-4;
 export const DEFAULT_CLIP_TOLERANCE = 1e-9;
 /** Default of {@link NarrowphaseOptions.torusRingPoints}. */
 export const DEFAULT_TORUS_RING_POINTS = 8;
+
+/**
+ * Index in `scratch.scalars` of the speculative margin (m) of the pair being collided: the
+ * hot-path entry point collideScratch (collide.ts) and the internal kernels read the margin from
+ * there rather than from an argument (a double argument of a call that V8 does not inline is
+ * boxed into a fresh heap number). Write it before each call:
+ * `scratch.scalars[NARROWPHASE_MARGIN] = margin`.
+ */
+export const NARROWPHASE_MARGIN = 4;
+/** Index in `scratch.scalars` of the axis tolerance read by the mixed SAT axis kernel. */
+export const SCALAR_AXIS_TOLERANCE = 5;
+/** Index in `scratch.scalars` of the separation handed to candidateSlot. */
+export const SCALAR_CANDIDATE = 6;
+/** Indices in `scratch.scalars` of the face clipper's z0, tolerance and σ tolerance. */
+export const SCALAR_CLIP_Z0 = 7;
+export const SCALAR_CLIP_EPS = 8;
+export const SCALAR_CLIP_EPS_SIGMA = 9;
+/** Indices in `scratch.scalars` of a torus ring point's cos φ, sin φ and height. */
+export const SCALAR_RING_COS = 10;
+export const SCALAR_RING_SIN = 11;
+export const SCALAR_RING_HEIGHT = 12;
+/** Length of `scratch.scalars`. */
+export const SCALAR_COUNT = 16;
 
 /** Which kind of axis the last box–box SAT chose. */
 export const SAT_SEPARATED = 0;
@@ -84,9 +108,11 @@ export interface NarrowphaseScratch {
   /** Result of the last box–box SAT. */
   readonly sat: SatResult;
   /**
-   * Result slots of kernels that produce a number (kept out of return values, which V8 may box
-   * when the call is not inlined): [0] separation and [1] cross-product length of a mixed SAT
-   * axis, [2] plane height of a half-space, [3] squared distance of a simplex closest point.
+   * Numbers passed between the narrowphase kernels (kept out of arguments and return values,
+   * which V8 boxes into fresh heap numbers when the call is not inlined): [0] separation and
+   * [1] cross-product length of a mixed SAT axis, [2] plane height of a half-space, [3] squared
+   * distance of a simplex closest point, then the slots named by the NARROWPHASE_* and SCALAR_*
+   * constants ({@link NARROWPHASE_MARGIN}: the margin of the pair being collided).
    */
   readonly scalars: Float64Array;
   // box–box, in A's frame: C[i*n + j] = A's axis i · B's axis j; t = Mᵀ(x_B − x_A)
@@ -175,6 +201,8 @@ export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions 
   if (ring < 3 || ring > 32) {
     throw new RangeError(`createNarrowphaseScratch: 'options.torusRingPoints' must be in 3..32, got ${ring}`);
   }
+  // keeps the hot path's shape reads megamorphic (see shape-kind.ts), in case V8 dropped them
+  trainShapeAccessors();
   const d = n - 1;
   const m = n + 1;
   const candidateCapacity = Math.max(2 ** n, clipCandidateBound(n), ring + 1, 16);
@@ -196,7 +224,7 @@ export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions 
       normal: vec(),
       localNormal: vec(),
     },
-    scalars: new Float64Array(4),
+    scalars: new Float64Array(SCALAR_COUNT),
     C: new Float64Array(n * n),
     absC: new Float64Array(n * n),
     t: vec(),

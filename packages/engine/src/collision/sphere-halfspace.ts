@@ -5,6 +5,7 @@
  */
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionHalfSpace, CollisionSphere } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { worldPlane } from './world-plane.js';
 
@@ -25,6 +26,21 @@ export function collideSphereHalfSpace(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideSphereHalfSpaceKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideSphereHalfSpace} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideSphereHalfSpaceKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionSphere,
+  poseA: Pose,
+  b: CollisionHalfSpace,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const N = scratch.v0;
   worldPlane(N, n, b, poseB, scratch.scalars, 2);
   const h = scratch.scalars[2];

@@ -5,6 +5,7 @@
  */
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionSphere } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 
 /**
@@ -22,8 +23,23 @@ export function collideSphereSphere(
   b: CollisionSphere,
   poseB: Pose,
   margin: number,
-  _scratch: NarrowphaseScratch,
+  scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideSphereSphereKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideSphereSphere} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideSphereSphereKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionSphere,
+  poseA: Pose,
+  b: CollisionSphere,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const xa = poseA.x;
   const xb = poseB.x;
   const N = out.normal;
@@ -42,7 +58,7 @@ export function collideSphereSphere(
   if (dist > 0) {
     for (let c = 0; c < n; c += 1) N[c] /= dist;
   } else {
-    N.fill(0);
+    for (let c = 0; c < n; c += 1) N[c] = 0;
     N[0] = 1;
   }
   const separation = dist - a.radius - b.radius;

@@ -5,6 +5,7 @@
  */
 import type { Manifold, Pose } from './manifold.js';
 import type { CollisionSphere, CollisionTorus } from './narrowphase-shapes.js';
+import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { pointToLocal } from './manifold.js';
 
@@ -29,6 +30,21 @@ export function collideTorusSphere(
   margin: number,
   scratch: NarrowphaseScratch,
 ): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  return collideTorusSphereKernel(out, n, a, poseA, b, poseB, scratch);
+}
+
+/** {@link collideTorusSphere} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]` (see pair-kernel.ts). */
+export function collideTorusSphereKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionTorus,
+  poseA: Pose,
+  b: CollisionSphere,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const M = poseA.M;
   const xb = poseB.x;
   const s = scratch.v0;

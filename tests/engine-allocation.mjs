@@ -18,7 +18,7 @@ if (typeof globalThis.gc !== 'function') {
 }
 
 const engine = await import('@physin/engine');
-const { World, Body, HyperBox, HyperSphere, dims } = engine;
+const { World, Body, HyperBox, HyperSphere, HyperTorus, HalfSpace, dims } = engine;
 
 const steps = Number(process.argv[2] ?? 10_000);
 const warmup = 3_000;
@@ -59,6 +59,30 @@ function makeWorld(n) {
   return world;
 }
 
+// A scene of resting contacts: a 9-box stack, a row of balls and a torus lying flat on a
+// half-space, with sleep off so every contact is solved in every step (broadphase, narrowphase
+// box–box, box–, sphere– and torus–half-space, solver with warm starting and shock propagation).
+function makeStackWorld(n) {
+  const D = dims(n);
+  const gravity = new Array(n).fill(0);
+  gravity[1] = -9.81;
+  const world = new World({ dimensions: n, gravity, params: { allowSleep: false } });
+  const up = new Array(n).fill(0);
+  up[1] = 1;
+  world.addBody(new Body(D, { shape: HalfSpace(D, up, 0), mass: 0 }));
+  const at = (x, y) => {
+    const p = new Array(n).fill(0);
+    p[0] = x;
+    p[1] = y;
+    return p;
+  };
+  for (let i = 0; i < 9; i += 1) world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: at(0, 0.5 + i) }));
+  for (let i = 0; i < 4; i += 1) world.addBody(new Body(D, { shape: HyperSphere(0.4), mass: 1, position: at(2 + i, 0.4) }));
+  const torus = new Body(D, { shape: HyperTorus(D, 1, 0.25, [0, 2]), mass: 1, position: at(-3, 0.25) });
+  world.addBody(torus);
+  return world;
+}
+
 const gcs = [];
 const observer = new PerformanceObserver((list) => {
   for (const entry of list.getEntries()) gcs.push({ start: entry.startTime, kind: entry.detail?.kind ?? entry.kind });
@@ -72,8 +96,14 @@ observer.observe({ entryTypes: ['gc'] });
 const WINDOWS = 3;
 
 const results = {};
-for (const n of [3, 4]) {
-  const world = makeWorld(n);
+const scenes = [
+  ['3', () => makeWorld(3)],
+  ['4', () => makeWorld(4)],
+  ['stack3', () => makeStackWorld(3)],
+  ['stack4', () => makeStackWorld(4)],
+];
+for (const [name, make] of scenes) {
+  const world = make();
   const dt = 1 / 60;
   for (let s = 0; s < warmup; s += 1) world.step(dt);
   // Let concurrent compilation jobs finish and install their code, then warm up once more, so
@@ -104,7 +134,7 @@ for (const n of [3, 4]) {
     }
     windows.push({ bytes: after - before, newSpace: spaces.new_space ?? 0, spaces, collections: inWindow.length, kinds: inWindow.map((g) => g.kind), msPerStep: (t1 - t0) / steps });
   }
-  results[n] = { steps, bodies: world.bodies.length, windows };
+  results[name] = { steps, bodies: world.bodies.length, touching: world.touchingCount, windows };
 }
 observer.disconnect();
 console.log(JSON.stringify(results));

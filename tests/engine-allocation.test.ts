@@ -15,6 +15,9 @@
  * a window, independent of the number of steps (measured with 2 000 and 40 000 steps alike).
  * Budget: 64 KB for the 10 000 steps, i.e. far less than one heap number (16 B) per step.
  *
+ * The same is measured on a scene of resting contacts (a stack, balls and a torus on a
+ * half-space, sleep off), so the broadphase, the narrowphase and the contact solver are covered.
+ *
  * The script imports packages/engine/dist; it is rebuilt here when any source of the algebra or
  * the engine is newer than it.
  */
@@ -47,6 +50,7 @@ interface Window {
 interface Measure {
   steps: number;
   bodies: number;
+  touching: number;
   windows: Window[];
 }
 
@@ -78,6 +82,19 @@ describe('World.step allocates nothing in steady state (built engine, child proc
         expect(w.newSpace).toBeLessThan(64 * 1024);
       }
       // Whole heap: the smallest window (the JIT's old-space leftovers do not repeat; see the script).
+      expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
+    });
+  }
+  for (const n of [3, 4]) {
+    it(`n = ${n}: 10 000 steps of a resting stack of 9 boxes, 4 balls and a torus on a half-space (sleep off, every contact solved): the same bounds`, () => {
+      const r = results[`stack${n}`]!;
+      expect(r.bodies).toBe(15);
+      // 9 stacked pairs (8 box–box + the ground), 4 balls and the torus on the ground.
+      expect(r.touching).toBe(14);
+      for (const w of r.windows) {
+        expect(w.collections).toBe(0);
+        expect(w.newSpace).toBeLessThan(64 * 1024);
+      }
       expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
     });
   }

@@ -16,6 +16,18 @@ import type { Dims } from '@physin/algebra';
 import { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';
 import { bodyDefaults, ROTOR_INPUT_TOLERANCE } from './params.js';
 import type { Shape } from './shapes/shape.js';
+import type { Pose } from './collision/manifold.js';
+import type { QueryShape } from './collision/query-shapes.js';
+import type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
+
+/**
+ * @internal What a body needs from the world that owns it: a way to wake it (the world also puts
+ * its broadphase proxy back among the awake ones) and to learn that it was moved by hand.
+ */
+export interface BodyOwner {
+  /** The body's sleep state or pose changed outside the step. */
+  onBodyChanged(body: Body): void;
+}
 
 /**
  * How a body moves.
@@ -106,6 +118,34 @@ function scratchFor(D: Dims): BodyScratch {
   });
 }
 
+/** The largest distance of a point of the shape from its local origin (m); 0 for a half-space. */
+function shapeBoundingRadius(n: number, shape: Shape): number {
+  const g = shape as unknown as QueryShape;
+  switch (g.kind) {
+    case 'box': {
+      let s = 0;
+      for (let i = 0; i < n; i += 1) s += g.halfExtents[i]! * g.halfExtents[i]!;
+      return Math.sqrt(s);
+    }
+    case 'sphere':
+      return g.radius;
+    case 'torus':
+      return g.majorRadius + g.minorRadius;
+    case 'mesh': {
+      let best = 0;
+      if (g.vertices === undefined) return 0; // a shape-like object without geometry (tests)
+      for (let v = 0; v < g.vertices.length; v += n) {
+        let s = 0;
+        for (let i = 0; i < n; i += 1) s += g.vertices[v + i]! * g.vertices[v + i]!;
+        if (s > best) best = s;
+      }
+      return Math.sqrt(best);
+    }
+    default:
+      return 0;
+  }
+}
+
 function isZero(a: ArrayLike<number>): boolean {
   for (let i = 0; i < a.length; i += 1) if (a[i] !== 0) return false;
   return true;
@@ -180,7 +220,24 @@ export class Body {
   /** @internal Whether a torque was applied since the last step. */
   hasTorque = false;
   /** @internal The world this body belongs to, or null. */
-  owner: object | null = null;
+  owner: BodyOwner | null = null;
+  /** @internal The body's broadphase proxy in its world, or -1. */
+  proxyId = -1;
+  /** @internal The pose the collision code reads (x and rotation matrix), filled by the world. */
+  pose: Pose | null = null;
+  /** @internal Whether the body sleeps (dynamic bodies only): it is neither integrated nor solved. */
+  sleeping = false;
+  /** @internal Seconds the body has been slower than the sleep thresholds. */
+  sleepTimer = 0;
+  /** @internal The pose changed by hand since the world last read it (setPositionN, rotateInPlane). */
+  poseDirty = true;
+  /** @internal Index in the world's body list. */
+  worldIndex = -1;
+  /** @internal Solver slot of the current sub-step (0 = the immovable slot), or -1. */
+  solverSlot = -1;
+  private listeners: CollisionListener[] | null = null;
+  /** @internal Largest distance of a shape point from the centre of mass (m); 0 for a half-space. */
+  boundingRadius = 0;
 
   private xView!: Float64Array;
   private rView!: Float64Array;
@@ -325,6 +382,7 @@ export class Body {
     }
     if (options.position !== undefined) this.xView.set(options.position);
     this.placeCentreOfMass();
+    this.boundingRadius = shapeBoundingRadius(D.n, shape);
     if (options.velocity !== undefined) this.vView.set(options.velocity);
     if (options.angularVelocity !== undefined) {
       this.wView.set(options.angularVelocity);
@@ -384,6 +442,67 @@ export class Body {
   /** A short description for messages: `body 7 ('crate')`. */
   get label(): string {
     return this.name === undefined ? `body ${this.id}` : `body ${this.id} ('${this.name}')`;
+  }
+
+  /**
+   * Adds a listener of collision events: `'collision'` is called after each step in which this
+   * body begins or ends touching another (see CollisionEvent; the event object is reused).
+   * @throws TypeError if `type` is not 'collision' or `listener` is not a function.
+   */
+  addEventListener(type: 'collision', listener: CollisionListener): this {
+    checkListener('Body.addEventListener', type, listener);
+    (this.listeners ??= []).push(listener);
+    return this;
+  }
+
+  /** Removes a listener added with {@link Body.addEventListener} (no effect if it is not there). */
+  removeEventListener(type: 'collision', listener: CollisionListener): this {
+    checkListener('Body.removeEventListener', type, listener);
+    const list = this.listeners;
+    if (list) {
+      const i = list.indexOf(listener);
+      if (i >= 0) list.splice(i, 1);
+    }
+    return this;
+  }
+
+  /** @internal Whether any collision listener is registered. */
+  get hasListeners(): boolean {
+    return this.listeners !== null && this.listeners.length > 0;
+  }
+
+  /** @internal Calls the collision listeners with `event`. */
+  emitCollision(event: CollisionEvent): void {
+    const list = this.listeners;
+    if (list === null) return;
+    for (let i = 0; i < list.length; i += 1) list[i]!(event);
+  }
+
+  /** Whether the body sleeps: it stays where it is, unmoved, until something touches or pushes it. */
+  get isSleeping(): boolean {
+    return this.sleeping;
+  }
+
+  /**
+   * Wakes the body (and, at the next step, every body resting on it or under it). Every call that
+   * changes a velocity, pushes, or moves the body wakes it by itself; call this after writing to
+   * a field directly.
+   */
+  wake(): this {
+    this.sleepTimer = 0;
+    if (this.sleeping) {
+      this.sleeping = false;
+      this.owner?.onBodyChanged(this);
+    }
+    return this;
+  }
+
+  /** The pose was changed by hand: the world must read it again, and the body wakes. */
+  private movedByHand(): void {
+    this.poseDirty = true;
+    this.sleepTimer = 0;
+    this.sleeping = false;
+    this.owner?.onBodyChanged(this);
   }
 
   /**
@@ -492,6 +611,7 @@ export class Body {
     checkVector(this.D, 'p', p, 'Body.setPositionN');
     this.xView.set(p);
     this.placeCentreOfMass();
+    this.movedByHand();
     return this;
   }
 
@@ -511,6 +631,7 @@ export class Body {
       this.placeCentreOfMass();
     }
     if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
+    this.movedByHand();
     return this;
   }
 
@@ -522,6 +643,7 @@ export class Body {
       throw new RangeError(`${fn}: ${this.label} is static and cannot move (argument 'v' must be zero)`);
     }
     this.vView.set(v);
+    this.wake();
     return this;
   }
 
@@ -537,6 +659,7 @@ export class Body {
     }
     this.wView.set(w);
     this.momentumFromOmega();
+    this.wake();
     return this;
   }
 
@@ -549,6 +672,7 @@ export class Body {
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
+    this.wake();
     return this;
   }
 
@@ -566,6 +690,7 @@ export class Body {
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
     addWedge(this.D, this.lView, r, j);
     this.omegaFromMomentum();
+    this.wake();
     return this;
   }
 
@@ -574,6 +699,7 @@ export class Body {
     checkVector(this.D, 'f', f, 'Body.applyCentralForce');
     if (this.motion !== MOTION_DYNAMIC) return this;
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    this.wake();
     return this;
   }
 
@@ -589,6 +715,7 @@ export class Body {
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
     addWedge(this.D, this.tView, r, f);
     this.hasTorque = true;
+    this.wake();
     return this;
   }
 
@@ -598,6 +725,7 @@ export class Body {
     if (this.motion !== MOTION_DYNAMIC) return this;
     for (let p = 0; p < this.D.k; p += 1) this.tView[p] = this.tView[p]! + t[p]!;
     this.hasTorque = true;
+    this.wake();
     return this;
   }
 
@@ -623,6 +751,8 @@ export class Body {
       this.lView.fill(0);
       this.wView.fill(0);
       this.clearForces();
+      this.sleeping = false;
+      this.owner?.onBodyChanged(this);
       return this;
     }
     const mp = this.shape.massProperties(this.D, m);
@@ -632,6 +762,9 @@ export class Body {
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
     this.momentumFromOmega();
+    this.sleeping = false;
+    this.sleepTimer = 0;
+    this.owner?.onBodyChanged(this);
     return this;
   }
 
@@ -643,6 +776,11 @@ export class Body {
       this.hasTorque = false;
     }
   }
+}
+
+function checkListener(fn: string, type: unknown, listener: unknown): void {
+  if (type !== 'collision') throw new TypeError(`${fn}: argument 'type' must be 'collision', got ${String(type)}`);
+  if (typeof listener !== 'function') throw new TypeError(`${fn}: argument 'listener' must be a function`);
 }
 
 function checkMaterial(material: unknown, fn: string): Material {

@@ -1,11 +1,14 @@
 /**
  * @physin/engine — rigid body dynamics in n dimensions (n = 2..8): bodies, shapes and their mass
- * properties, the world and its step, and every tolerance in one place (`defaultParams`).
+ * properties, collision and the contact solver, the world and its step, and every tolerance in
+ * one place (`defaultParams`).
  *
  * @module
  */
 export { World } from './world.js';
-export type { WorldOptions } from './world.js';
+export type { WorldOptions, WorldRayHit } from './world.js';
+export { ContactEvents } from './contacts/contact-events.js';
+export type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
 export { Body } from './body.js';
 export type { BodyOptions, BodyType, Material } from './body.js';
 export { defaultParams, validateParams, mergeParams, paramNames, bodyDefaults, ROTOR_INPUT_TOLERANCE, MAX_PARAM_COUNT } from './params.js';

@@ -5,7 +5,23 @@
  */
 import { checkInteger, checkNumber, checkVector, dims, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
-import { Body } from './body.js';
+import { Body, MOTION_STATIC } from './body.js';
+import type { BodyOwner } from './body.js';
+import { computeBoundsUnchecked } from './collision/bounds.js';
+import { createBroadphase } from './collision/broadphase.js';
+import type { Broadphase } from './collision/broadphase.js';
+import { createPose } from './collision/manifold.js';
+import { createNarrowphaseScratch } from './collision/narrowphase-scratch.js';
+import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
+import { createIdList, createRayCastResult, queryOverlap, rayCastClosest } from './collision/query.js';
+import type { RayCastSource } from './collision/query.js';
+import type { QueryShape } from './collision/query-shapes.js';
+import { ContactEvents } from './contacts/contact-events.js';
+import type { CollisionEvent } from './contacts/contact-events.js';
+import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from './contacts/contact-set.js';
+import { ContactSolver } from './solver/contact-solver.js';
+import { Islands } from './solver/islands.js';
+import { SolverBodies } from './solver/solver-bodies.js';
 import { NonFiniteStateError } from './errors.js';
 import { integratePositions } from './integrator/positions.js';
 import { createRotorStepScratch } from './integrator/rotor-step.js';
@@ -45,6 +61,23 @@ interface WorldScratch {
   readonly rotor: RotorStepScratch;
   /** k numbers for the velocity stage. */
   readonly bivector: Float64Array;
+  /** A bounding box (n numbers each). */
+  readonly min: Float64Array;
+  readonly max: Float64Array;
+  /** A half-space's world normal (n numbers). */
+  readonly normal: Float64Array;
+}
+
+/** The first hit of {@link World.rayCast}. */
+export interface WorldRayHit {
+  /** The body hit. */
+  readonly body: Body;
+  /** Where the ray meets its surface (world, n numbers). */
+  readonly point: Float64Array;
+  /** The outward unit normal of the surface there (n numbers). */
+  readonly normal: Float64Array;
+  /** Distance from the origin along the normalised direction (m). */
+  readonly distance: number;
 }
 
 const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
@@ -80,6 +113,42 @@ export class World {
   /** [simulated time (s), completed steps]: kept in typed storage so step() boxes no double. */
   private readonly clock = new Float64Array(2);
 
+  // ---- collision and contacts (see docs/solver.md) ----
+  private readonly broadphase: Broadphase;
+  private bodyOfProxy: (Body | null)[] = [];
+  private readonly narrowScratch: NarrowphaseScratch;
+  private readonly contacts: ContactSet;
+  private readonly solverBodies: SolverBodies;
+  private readonly solver: ContactSolver;
+  private readonly islands = new Islands();
+  /** Per body (world index): the distance it can close in one sub-step (m), for speculative contacts. */
+  private reach = new Float64Array(16);
+  /** The broadphase boxes lag the poses (a step ran since the last query). */
+  private boundsStale = false;
+  private readonly events: ContactEvents;
+  private readonly collisionEvent: CollisionEvent;
+  private readonly setSleeping = (body: Body, asleep: boolean): void => {
+    body.sleeping = asleep;
+    if (asleep) {
+      body.v.fill(0);
+      body.L.fill(0);
+      body.w.fill(0);
+    }
+    this.broadphase.setAwake(body.proxyId, !asleep);
+  };
+  private readonly owner: BodyOwner = {
+    onBodyChanged: (body: Body): void => {
+      if (body.proxyId < 0) return;
+      this.broadphase.setStatic(body.proxyId, body.motion === MOTION_STATIC);
+      this.broadphase.setAwake(body.proxyId, !body.sleeping);
+    },
+  };
+  private readonly raySource: RayCastSource = {
+    shapeOf: (id) => this.bodyOfProxy[id]!.shape as unknown as QueryShape,
+    positionOf: (id) => this.bodyOfProxy[id]!.pose!.x,
+    rotationOf: (id) => this.bodyOfProxy[id]!.pose!.M,
+  };
+
   /**
    * @throws TypeError / RangeError for a bad `dimensions` (not an integer in 2..8), `gravity`
    *   (wrong length, non-finite) or `params` (unknown name, wrong type or range).
@@ -104,8 +173,50 @@ export class World {
     this.gravityValue = new Float64Array(D.n);
     if (options.gravity !== undefined) this.gravityValue.set(options.gravity);
     this.snapshot = createStepSnapshot(Body.stateLength(D));
-    this.scratch = { rotor: createRotorStepScratch(D), bivector: new Float64Array(D.k) };
+    this.scratch = {
+      rotor: createRotorStepScratch(D),
+      bivector: new Float64Array(D.k),
+      min: new Float64Array(D.n),
+      max: new Float64Array(D.n),
+      normal: new Float64Array(D.n),
+    };
     this.constants = createStepConstants();
+    this.broadphase = createBroadphase(D.n);
+    this.narrowScratch = createNarrowphaseScratch(D.n);
+    this.contacts = new ContactSet(D.n);
+    this.solverBodies = new SolverBodies(D);
+    this.solver = new ContactSolver(D);
+    this.events = new ContactEvents(D.n);
+    this.collisionEvent = {
+      type: 'begin',
+      body: null as unknown as Body,
+      other: null as unknown as Body,
+      point: new Float64Array(D.n),
+      normal: new Float64Array(D.n),
+      impulse: 0,
+    };
+  }
+
+  /**
+   * The collision events of the last step (begin / end touching per pair of bodies), in flat
+   * typed arrays that the step refills without allocating. See {@link ContactEvents}.
+   */
+  get contactEvents(): ContactEvents {
+    return this.events;
+  }
+
+  /** Count of contact pairs the broadphase holds (touching or close). */
+  get contactCount(): number {
+    return this.contacts.count;
+  }
+
+  /** Count of touching contact pairs (a manifold point closer than `contactMargin`). */
+  get touchingCount(): number {
+    let c = 0;
+    for (let i = 0; i < this.contacts.count; i += 1) {
+      if (this.contacts.flags[this.contacts.order[i]!]! & CONTACT_TOUCHING) c += 1;
+    }
+    return c;
   }
 
   /** The current parameters (a frozen object; change them with {@link World.setParams}). */
@@ -162,16 +273,39 @@ export class World {
     if (body.D.n !== this.n) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) has n = ${body.D.n} but the world has n = ${this.n}`);
     }
-    if (body.owner === this) {
+    if (body.owner === this.owner) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is already in this world`);
     }
     if (body.owner !== null) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) already belongs to another world; remove it there first`);
     }
+    // Bounds first: a body so far out that its box overflows is refused before anything changes.
+    if (body.pose === null || body.pose.x.length !== this.n) body.pose = createPose(this.n);
+    this.updatePose(body);
+    const sc = this.scratch;
+    const isHalfSpace = body.shape.kind === 'halfspace';
+    if (isHalfSpace) this.halfSpacePlane(body);
+    else this.boundsOf(body);
+    let finite = isHalfSpace ? sc.max[0]! * 0 : 0;
+    for (let i = 0; i < this.n; i += 1) finite += isHalfSpace ? sc.normal[i]! * 0 : sc.min[i]! * 0 + sc.max[i]! * 0;
+    if (finite !== 0) {
+      throw new RangeError(`${fn}: argument 'body' (${body.label}) is so far from the origin that its bounding box overflows`);
+    }
     reserveStepSnapshot(this.snapshot, this.bodyList.length + 1);
-    body.owner = this;
+    this.reach = growFloat64(this.reach, this.bodyList.length + 1);
+    body.owner = this.owner;
+    body.worldIndex = this.bodyList.length;
+    body.sleeping = false;
+    body.sleepTimer = 0;
+    body.poseDirty = false;
     this.bodyList.push(body);
     this.bodyView = Object.freeze(this.bodyList.slice());
+    this.reach[body.worldIndex] = 0;
+    const bp = this.broadphase;
+    body.proxyId = isHalfSpace
+      ? bp.createHalfSpaceProxy(sc.normal, sc.max[0]!)
+      : bp.createProxy(sc.min, sc.max, body.motion === MOTION_STATIC);
+    this.bodyOfProxy[body.proxyId] = body;
     return body;
   }
 
@@ -184,11 +318,18 @@ export class World {
     if (!(body instanceof Body)) {
       throw new TypeError(`${fn}: argument 'body' must be a Body, got ${body === null ? 'null' : typeof body}`);
     }
-    const index = body.owner === this ? this.bodyList.indexOf(body) : -1;
+    const index = body.owner === this.owner ? this.bodyList.indexOf(body) : -1;
     if (index < 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is not in this world`);
     }
     this.bodyList.splice(index, 1);
+    for (let i = index; i < this.bodyList.length; i += 1) this.bodyList[i]!.worldIndex = i;
+    this.contacts.removeBody(body);
+    this.broadphase.destroyProxy(body.proxyId);
+    this.bodyOfProxy[body.proxyId] = null;
+    body.proxyId = -1;
+    body.worldIndex = -1;
+    body.sleeping = false;
     body.owner = null;
     this.bodyView = Object.freeze(this.bodyList.slice());
     return this;
@@ -198,13 +339,18 @@ export class World {
    * Advances the world by `dt` seconds (default `params.fixedTimeStep`) in `params.subSteps` equal
    * sub-steps h = dt / subSteps. Each sub-step, top to bottom:
    *
-   * 1. forces → velocities: v += h (F/m + g), L += h τ, damping (dynamic bodies);
-   * 2. (next issues: broadphase, narrowphase, islands, contact and joint solver on v and L);
-   * 3. velocities → positions: x += h v, the midpoint rotor step under fixed L, rotor correction,
+   * 1. forces → velocities: v += h (F/m + g), L += h τ, damping (awake dynamic bodies);
+   * 2. broadphase: the boxes of the bodies that move, grown by the distance each can close in
+   *    this sub-step, then the pairs that start or stop overlapping;
+   * 3. narrowphase: the manifold of every pair with an awake body, impulses matched by feature id;
+   * 4. contact solver on v and L (warm start, iterations, shock propagation, restitution);
+   * 5. velocities → positions: x += h v, the midpoint rotor step under fixed L, rotor correction,
    *    ω rebuilt from L; kinematic bodies move by their own v and ω; each body is then checked for
-   *    non-finite numbers.
+   *    non-finite numbers;
+   * 6. events (begin / end touching) and islands: sleep timers, whole islands sleep or wake.
    *
-   * After the last sub-step the accumulated forces and torques are cleared.
+   * After the last sub-step the accumulated forces and torques are cleared and the body
+   * listeners are called.
    *
    * @throws TypeError / RangeError if dt is not a finite number > 0 (nothing changes).
    * @throws NonFiniteStateError if a body's state became non-finite: every body is restored to
@@ -225,16 +371,276 @@ export class World {
     c[STEP_LINEAR_SCALE] = p.linearDamping > 0 ? 1 / (1 + h * p.linearDamping) : 1;
     c[STEP_ANGULAR_SCALE] = p.angularDamping > 0 ? 1 / (1 + h * p.angularDamping) : 1;
     saveStepState(this.snapshot, bodies);
+    this.events.clear();
     for (let s = 0; s < subSteps; s += 1) {
       integrateVelocities(D, bodies, this.gravityValue, c, this.scratch.bivector);
-      // Collision detection and the constraint solver slot in here (they act on v and L).
+      const unbounded = this.updateBroadphase();
+      if (unbounded >= 0) this.failStep(bodies[unbounded]!, s, subSteps);
+      this.contacts.updateManifolds(p, this.reach, this.narrowScratch);
+      this.solveContacts(p);
       const bad = integratePositions(D, bodies, c, this.scratch.rotor);
       if (bad >= 0) this.failStep(bodies[bad]!, s, subSteps);
+      for (let b = 0; b < bodies.length; b += 1) {
+        const body = bodies[b]!;
+        if (body.motion !== MOTION_STATIC && !body.sleeping) this.updatePose(body);
+      }
+      this.recordEvents();
+      if (p.allowSleep) {
+        this.islands.update(bodies, this.contacts, c, p, this.setSleeping);
+      }
     }
+    this.boundsStale = true;
     for (let b = 0; b < bodies.length; b += 1) bodies[b]!.clearForces();
     this.clock[0] = this.clock[0]! + dt;
     this.clock[1] = this.clock[1]! + 1;
+    if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
     return this;
+  }
+
+  // ---- the stages behind step() ----
+
+  /** pose.x = body.x, pose.M = the matrix of body.R. */
+  private updatePose(body: Body): void {
+    const pose = body.pose!;
+    pose.x.set(body.x);
+    this.D.kernels.toMatrix(pose.M, body.R);
+  }
+
+  /** The world plane of a half-space body into scratch: normal in `normal`, offset in max[0]. */
+  private halfSpacePlane(body: Body): void {
+    const shape = body.shape as unknown as { normal: Float64Array; offset: number };
+    const n = this.n;
+    const M = body.pose!.M;
+    const N = this.scratch.normal;
+    let off = shape.offset;
+    for (let i = 0; i < n; i += 1) {
+      let s = 0;
+      for (let c2 = 0; c2 < n; c2 += 1) s += M[i * n + c2]! * shape.normal[c2]!;
+      N[i] = s;
+      off += s * body.x[i]!;
+    }
+    this.scratch.max[0] = off;
+  }
+
+  /**
+   * The body's bounding box grown by its reach (see updateBroadphase) into scratch min / max.
+   * (The reach is added here rather than passed as the margin: a double argument to a call that
+   * is not inlined is boxed, and this runs for every moving body in every sub-step.)
+   */
+  private bodyBounds(body: Body): void {
+    this.boundsOf(body);
+    const grow = this.reach[body.worldIndex]!;
+    if (grow > 0) {
+      const { min, max } = this.scratch;
+      for (let i = 0; i < this.n; i += 1) {
+        min[i] = min[i]! - grow;
+        max[i] = max[i]! + grow;
+      }
+    }
+  }
+
+  /** The body's tight bounding box into scratch min / max. */
+  private boundsOf(body: Body): void {
+    const pose = body.pose!;
+    computeBoundsUnchecked(this.scratch.min, this.scratch.max, this.n, body.shape as unknown as QueryShape, pose.x, pose.M, 0);
+  }
+
+  /** Moves the proxy of a body to its current pose (a half-space by its plane). */
+  private moveProxy(body: Body): void {
+    if (body.shape.kind === 'halfspace') {
+      this.halfSpacePlane(body);
+      this.broadphase.moveHalfSpace(body.proxyId, this.scratch.normal, this.scratch.max[0]!);
+    } else {
+      this.bodyBounds(body);
+      const { min, max } = this.scratch;
+      let finite = 0;
+      for (let i = 0; i < this.n; i += 1) finite += min[i]! * 0 + max[i]! * 0;
+      // A body at the edge of overflow keeps its last box; its own step then fails by name.
+      if (finite === 0) this.broadphase.moveProxy(body.proxyId, min, max);
+    }
+  }
+
+  /**
+   * Stage 2: every moving body's box, grown by its reach h·(|v| + |ω|·radius) (the most its
+   * surface can travel in the sub-step), and bodies moved by hand; then the broadphase's pair
+   * changes go to the contact set. Returns the index of a body whose velocity is not finite (the
+   * step is then undone before anything reads it), or -1.
+   */
+  private updateBroadphase(): number {
+    const bodies = this.bodyList;
+    const reach = this.reach;
+    const h = this.constants[STEP_H]!;
+    for (let b = 0; b < bodies.length; b += 1) {
+      const body = bodies[b]!;
+      if (body.poseDirty) {
+        this.updatePose(body);
+        body.poseDirty = false;
+      } else if (body.motion === MOTION_STATIC || body.sleeping) {
+        reach[b] = 0;
+        continue;
+      }
+      // |v| and |ω| scaled by their largest component, so a huge but finite velocity does not
+      // overflow in the square.
+      const v = body.v;
+      let vm = 0;
+      for (let i = 0; i < v.length; i += 1) vm = Math.max(vm, Math.abs(v[i]!));
+      let v2 = 0;
+      if (vm > 0) for (let i = 0; i < v.length; i += 1) v2 += (v[i]! / vm) ** 2;
+      const w = body.w;
+      let wm = 0;
+      for (let i = 0; i < w.length; i += 1) wm = Math.max(wm, Math.abs(w[i]!));
+      let w2 = 0;
+      if (wm > 0) for (let i = 0; i < w.length; i += 1) w2 += (w[i]! / wm) ** 2;
+      const r = h * (vm * Math.sqrt(v2) + wm * Math.sqrt(w2) * body.boundingRadius);
+      if (!(vm < Infinity) || !(wm < Infinity)) return b;
+      if (!(r < Infinity)) continue; // finite but beyond reach of any box: nothing can meet it
+      reach[b] = r;
+      this.moveProxy(body);
+    }
+    const bp = this.broadphase;
+    bp.updatePairs();
+    this.contacts.applyPairChanges(bp.removedPairs, bp.removedCount, bp.addedPairs, bp.addedCount, this.bodyOfProxy, this.events);
+    return -1;
+  }
+
+  /** Stage 4: the contact solver on the manifolds of this sub-step. */
+  private solveContacts(p: Readonly<Params>): void {
+    const sb = this.solverBodies;
+    const solver = this.solver;
+    sb.reset();
+    if (solver.prepare(this.contacts, sb, this.constants, p) === 0) return;
+    if (p.useWarmStart) solver.warmStart(sb);
+    solver.solve(sb, p.iterations);
+    if (p.useShockPropagation) solver.shockPropagate(sb, p.shockIterations);
+    solver.restitution(sb);
+    solver.store(this.contacts);
+    sb.writeBack();
+  }
+
+  /** Stage 6a: begin / end events from the touching flags of this sub-step. */
+  private recordEvents(): void {
+    const contacts = this.contacts;
+    for (let i = 0; i < contacts.count; i += 1) {
+      const slot = contacts.order[i]!;
+      const f = contacts.flags[slot]!;
+      const now = (f & CONTACT_TOUCHING) !== 0;
+      const before = (f & CONTACT_WAS_TOUCHING) !== 0;
+      if (now === before) continue;
+      const A = contacts.bodyA[slot]!;
+      const B = contacts.bodyB[slot]!;
+      if (now) {
+        this.events.pushBegin(contacts, slot);
+      } else {
+        this.events.pushEnd(A, B);
+      }
+    }
+  }
+
+  /** Calls the collision listeners of the bodies in this step's events (after the step). */
+  private dispatchEvents(): void {
+    const ev = this.events;
+    const e = this.collisionEvent;
+    const n = this.n;
+    for (let i = 0; i < ev.beginCount; i += 1) {
+      const A = ev.beginA[i]!;
+      const B = ev.beginB[i]!;
+      if (!A.hasListeners && !B.hasListeners) continue;
+      e.type = 'begin';
+      e.impulse = ev.beginImpulse[i]!;
+      for (let side = 0; side < 2; side += 1) {
+        e.body = side === 0 ? A : B;
+        e.other = side === 0 ? B : A;
+        const sign = side === 0 ? 1 : -1;
+        for (let d = 0; d < n; d += 1) {
+          e.point[d] = ev.beginPoint[i * n + d]!;
+          e.normal[d] = sign * ev.beginNormal[i * n + d]!;
+        }
+        e.body.emitCollision(e);
+      }
+    }
+    for (let i = 0; i < ev.endCount; i += 1) {
+      const A = ev.endA[i]!;
+      const B = ev.endB[i]!;
+      if (!A.hasListeners && !B.hasListeners) continue;
+      e.type = 'end';
+      e.impulse = 0;
+      e.point.fill(0);
+      e.normal.fill(0);
+      for (let side = 0; side < 2; side += 1) {
+        e.body = side === 0 ? A : B;
+        e.other = side === 0 ? B : A;
+        e.body.emitCollision(e);
+      }
+    }
+  }
+
+  /** Brings every broadphase box up to the bodies' poses (before a query). */
+  private refreshBounds(): void {
+    if (!this.boundsStale) {
+      let dirty = false;
+      for (const body of this.bodyList) if (body.poseDirty) dirty = true;
+      if (!dirty) return;
+    }
+    for (const body of this.bodyList) {
+      if (body.poseDirty) {
+        this.updatePose(body);
+        body.poseDirty = false;
+      } else if (body.motion === MOTION_STATIC || body.sleeping) {
+        continue;
+      }
+      this.reach[body.worldIndex] = 0;
+      this.moveProxy(body);
+    }
+    this.boundsStale = false;
+  }
+
+  // ---- queries ----
+
+  /**
+   * The first body hit by the ray origin + t·d̂, t in [0, maxDistance] (d̂ = direction
+   * normalised), or null. Every shape counts as solid: a ray that starts inside a body hits it at
+   * distance 0. Sleeping bodies are found and stay asleep. A user-level query: it allocates its
+   * result.
+   *
+   * @throws TypeError / RangeError for an origin or direction of the wrong length or non-finite,
+   *   a zero direction, or a negative or non-finite maxDistance.
+   */
+  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
+    const fn = 'World.rayCast';
+    checkVector(this.D, 'origin', origin, fn);
+    checkVector(this.D, 'direction', direction, fn);
+    let len = 0;
+    for (let i = 0; i < this.n; i += 1) len += direction[i]! * direction[i]!;
+    if (!(len > 0)) throw new RangeError(`${fn}: argument 'direction' must be a non-zero vector`);
+    checkNumber('maxDistance', maxDistance, fn);
+    if (!(maxDistance >= 0)) throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
+    this.refreshBounds();
+    const out = createRayCastResult(this.n);
+    const id = rayCastClosest(this.broadphase, this.raySource, origin, direction, maxDistance, out);
+    if (id < 0) return null;
+    return { body: this.bodyOfProxy[id]!, point: out.point, normal: out.normal, distance: out.distance };
+  }
+
+  /**
+   * The bodies whose bounding boxes overlap the box [min, max] (closed intervals; half-spaces
+   * when the box reaches their solid side), in the order they were added. Sleeping bodies count.
+   *
+   * @throws TypeError / RangeError for bounds of the wrong length, non-finite, or min > max.
+   */
+  queryBox(min: ArrayLike<number>, max: ArrayLike<number>): Body[] {
+    const fn = 'World.queryBox';
+    checkVector(this.D, 'min', min, fn);
+    checkVector(this.D, 'max', max, fn);
+    for (let i = 0; i < this.n; i += 1) {
+      if (min[i]! > max[i]!) throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
+    }
+    this.refreshBounds();
+    const list = createIdList();
+    queryOverlap(this.broadphase, min, max, list);
+    const found: Body[] = [];
+    for (let i = 0; i < list.count; i += 1) found.push(this.bodyOfProxy[list.ids[i]!]!);
+    found.sort((a, b) => a.worldIndex - b.worldIndex);
+    return found;
   }
 
   /** Undoes the current step and throws the error that names the body. */

@@ -5,7 +5,7 @@
  *   step of `rotor-step.ts` under the fixed world L (midpoint rule, correction, ω rebuilt);
  * - kinematic: x += h v and R ← exp(−h ω/2) R with its own fixed ω (exact for constant
  *   velocities); L follows as I_world ω when it has a mass;
- * - static: nothing.
+ * - static and sleeping: nothing.
  *
  * Each body is checked for non-finite numbers right after its own update; the stage stops at the
  * first bad one and returns its index, so the world can undo the step before anything reads it.
@@ -38,7 +38,7 @@ export function integratePositions(D: Dims, bodies: readonly Body[], constants: 
   for (let b = 0; b < bodies.length; b += 1) {
     const body = bodies[b]!;
     const motion = body.motion;
-    if (motion === MOTION_STATIC) continue;
+    if (motion === MOTION_STATIC || body.sleeping) continue;
     const x = body.x;
     const v = body.v;
     for (let i = 0; i < n; i += 1) x[i] = x[i]! + h * v[i]!;

@@ -1,7 +1,7 @@
 /**
  * Stage 1 of a sub-step: external forces change the velocities.
  *
- * For every dynamic body: v += h (F/m + g), L += h τ (world frame), then the optional damping;
+ * For every awake dynamic body: v += h (F/m + g), L += h τ (world frame), then the optional damping;
  * ω is rebuilt from L only when L changed, so a torque-free undamped body keeps L and ω untouched.
  * Static and kinematic bodies are skipped: forces do not move them.
  *
@@ -35,7 +35,7 @@ export function integrateVelocities(
   const angularScale = constants[STEP_ANGULAR_SCALE]!;
   for (let b = 0; b < bodies.length; b += 1) {
     const body = bodies[b]!;
-    if (body.motion !== MOTION_DYNAMIC) continue;
+    if (body.motion !== MOTION_DYNAMIC || body.sleeping) continue;
     const v = body.v;
     const f = body.force;
     const im = body.invMass;

@@ -1,0 +1,109 @@
+/**
+ * Collision events: a pair of bodies begins or ends touching.
+ *
+ * The step fills one typed list per world, cleared at the start of each `World.step`: read
+ * `world.contactEvents` after the step without allocating anything. Listeners on bodies
+ * (`body.addEventListener('collision', fn)`) are called after the step from the same list, with
+ * one event object per world that is rewritten for every call: copy what you keep.
+ *
+ * @module
+ */
+import type { Body } from '../body.js';
+import { growFloat64 } from './contact-set.js';
+import type { ContactSet } from './contact-set.js';
+
+/** What a collision listener receives. The object is reused: copy the fields you keep. */
+export interface CollisionEvent {
+  /** 'begin' when the two bodies start touching, 'end' when they stop. */
+  type: 'begin' | 'end';
+  /** The body the listener is on. */
+  body: Body;
+  /** The other body. */
+  other: Body;
+  /** Deepest contact point at the start of the touch (world, n numbers); zeros for 'end'. */
+  readonly point: Float64Array;
+  /** Contact normal pointing from `body` to `other` (n numbers); zeros for 'end'. */
+  readonly normal: Float64Array;
+  /** Total normal impulse of the first touching sub-step (N·s); 0 for 'end'. */
+  impulse: number;
+}
+
+/** A listener of collision events on a body. */
+export type CollisionListener = (event: CollisionEvent) => void;
+
+/**
+ * The begin and end events of one step, in flat arrays: begin event i is between
+ * `beginA[i]` and `beginB[i]`, at `beginPoint[i*n ..]`, with normal `beginNormal[i*n ..]` (from A
+ * to B) and normal impulse `beginImpulse[i]`.
+ */
+export class ContactEvents {
+  /** Count of dimensions. */
+  readonly n: number;
+  /** Count of begin events of the last step. */
+  beginCount = 0;
+  /** First body of each begin event. */
+  readonly beginA: Body[] = [];
+  /** Second body of each begin event. */
+  readonly beginB: Body[] = [];
+  /** Deepest point of each begin event, n numbers each. */
+  beginPoint: Float64Array;
+  /** Normal (from A to B) of each begin event, n numbers each. */
+  beginNormal: Float64Array;
+  /** Total normal impulse of each begin event (N·s). */
+  beginImpulse: Float64Array;
+  /** Count of end events of the last step. */
+  endCount = 0;
+  /** First body of each end event. */
+  readonly endA: Body[] = [];
+  /** Second body of each end event. */
+  readonly endB: Body[] = [];
+
+  constructor(n: number) {
+    this.n = n;
+    this.beginPoint = new Float64Array(8 * n);
+    this.beginNormal = new Float64Array(8 * n);
+    this.beginImpulse = new Float64Array(8);
+  }
+
+  /** Forgets the events of the last step. */
+  clear(): void {
+    this.beginCount = 0;
+    this.endCount = 0;
+  }
+
+  /**
+   * Records that the bodies of contact `slot` began touching, with the deepest point of their
+   * manifold and its total normal impulse.
+   */
+  pushBegin(contacts: ContactSet, slot: number): void {
+    const n = this.n;
+    const A = contacts.bodyA[slot]!;
+    const B = contacts.bodyB[slot]!;
+    const man = contacts.manifolds[slot]!;
+    const P = contacts.pointCapacity;
+    let impulse = 0;
+    for (let q = 0; q < man.count; q += 1) impulse += contacts.normalImpulse[slot * P + q]!;
+    const i = this.beginCount++;
+    if ((i + 1) * n > this.beginPoint.length) {
+      this.beginPoint = growFloat64(this.beginPoint, (i + 1) * n);
+      this.beginNormal = growFloat64(this.beginNormal, (i + 1) * n);
+      this.beginImpulse = growFloat64(this.beginImpulse, i + 1);
+    }
+    this.beginA[i] = A;
+    this.beginB[i] = B;
+    let deepest = 0;
+    for (let q = 1; q < man.count; q += 1) if (man.separations[q] < man.separations[deepest]) deepest = q;
+    for (let d = 0; d < n; d += 1) {
+      this.beginPoint[i * n + d] = man.points[deepest * n + d];
+      this.beginNormal[i * n + d] = man.normal[d];
+    }
+    this.beginImpulse[i] = impulse;
+  }
+
+  /** Records that A and B stopped touching. */
+  pushEnd(A: Body, B: Body): void {
+    const i = this.endCount++;
+    this.endA[i] = A;
+    this.endB[i] = B;
+  }
+}

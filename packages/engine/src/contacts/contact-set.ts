@@ -1,0 +1,312 @@
+/**
+ * The contacts of a world: one slot per pair of bodies whose broadphase boxes overlap, kept in the
+ * order of the pair key so every pass over them is deterministic.
+ *
+ * A slot holds the pair's manifold (refreshed by the narrowphase every sub-step while one of the
+ * two bodies is awake), the impulses of the last solve per manifold point (matched by feature id
+ * so the solver can warm-start them), the mixed material and the touching state that drives the
+ * begin / end events. The set follows the broadphase: `applyPairChanges` merges its sorted lists
+ * of added and removed pairs into the sorted key list, so no hashing is involved and nothing is
+ * allocated once the arrays have grown to the scene.
+ *
+ * @module
+ */
+import type { Body } from '../body.js';
+import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
+import { collide } from '../collision/collide.js';
+import type { Manifold } from '../collision/manifold.js';
+import { createManifold, maxManifoldPoints } from '../collision/manifold.js';
+import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
+import type { Params } from '../params.js';
+import type { ContactEvents } from './contact-events.js';
+
+/** Flag: the manifold has a point closer than the contact margin (the pair touches). */
+export const CONTACT_TOUCHING = 1;
+/** Flag: the pair touched at the end of the previous sub-step (for begin / end events). */
+export const CONTACT_WAS_TOUCHING = 2;
+/** Flag: the manifold was refreshed in this sub-step (one of the bodies is awake). */
+export const CONTACT_ACTIVE = 4;
+
+/** Key of the pair of proxies (a, b), a < b: a·2²⁶ + b, exact in a double. */
+export const PAIR_KEY_SCALE = 67_108_864;
+
+/** Grows a Float64Array to at least `need` entries, doubling, keeping the first `keep`. */
+export function growFloat64(a: Float64Array, need: number, keep = a.length): Float64Array<ArrayBuffer> {
+  if (need <= a.length) return a as Float64Array<ArrayBuffer>;
+  let len = Math.max(1, a.length);
+  while (len < need) len *= 2;
+  const out = new Float64Array(len);
+  out.set(a.subarray(0, Math.min(keep, a.length)));
+  return out;
+}
+
+/** Grows an Int32Array to at least `need` entries, doubling, keeping the first `keep`. */
+export function growInt32(a: Int32Array, need: number, keep = a.length): Int32Array<ArrayBuffer> {
+  if (need <= a.length) return a as Int32Array<ArrayBuffer>;
+  let len = Math.max(1, a.length);
+  while (len < need) len *= 2;
+  const out = new Int32Array(len);
+  out.set(a.subarray(0, Math.min(keep, a.length)));
+  return out;
+}
+
+/**
+ * Whether the body moves in this sub-step: an awake dynamic body, or a kinematic body with a
+ * velocity (a kinematic body at rest is as still as a static one and must not wake its neighbours).
+ */
+export function isMoving(body: Body): boolean {
+  if (body.motion === MOTION_DYNAMIC) return !body.sleeping;
+  if (body.motion === MOTION_STATIC) return false;
+  const v = body.v;
+  for (let i = 0; i < v.length; i += 1) if (v[i] !== 0) return true;
+  const w = body.w;
+  for (let i = 0; i < w.length; i += 1) if (w[i] !== 0) return true;
+  return false;
+}
+
+/**
+ * The contact slots of one world (n dimensions). All arrays are indexed by slot; `order` lists
+ * the live slots in ascending pair key.
+ */
+export class ContactSet {
+  /** Count of dimensions. */
+  readonly n: number;
+  /** Most points a manifold keeps in n dimensions. */
+  readonly pointCapacity: number;
+
+  /** Live slots in ascending key order: order[0 .. count). */
+  order: Int32Array = new Int32Array(16);
+  /** Count of live contacts. */
+  count = 0;
+
+  /** Pair key of each slot. */
+  keys: Float64Array = new Float64Array(16);
+  /** Bodies of each slot (A owns the lower proxy id); null for a free slot. */
+  bodyA: (Body | null)[] = [];
+  /** Second body of each slot. */
+  bodyB: (Body | null)[] = [];
+  /** The manifold of each slot (normal from A to B). */
+  manifolds: Manifold[] = [];
+  /** Accumulated normal impulse per manifold point (N·s), pointCapacity per slot. */
+  normalImpulse: Float64Array;
+  /**
+   * Per manifold point: the normal velocity (m/s, negative = approaching) at which a speculative
+   * contact stopped the bodies at the surface in the last sub-step, else 0. The next sub-step
+   * bounces from that speed: the stop itself leaves almost no approach speed to bounce from.
+   */
+  approachSpeed: Float64Array;
+  /** Accumulated friction impulse per manifold point as a world vector (N·s), n per point. */
+  tangentImpulse: Float64Array;
+  /** Mixed friction coefficient of each slot. */
+  friction: Float64Array = new Float64Array(16);
+  /** Mixed restitution of each slot. */
+  restitution: Float64Array = new Float64Array(16);
+  /** CONTACT_* flags of each slot. */
+  flags: Uint8Array = new Uint8Array(16);
+
+  private capacity = 0;
+  private freeSlots: Int32Array = new Int32Array(16);
+  private freeCount = 0;
+  private orderNext: Int32Array = new Int32Array(16);
+  /** Scratch of the id matching: the previous ids, impulses and friction vectors of one manifold. */
+  private readonly oldIds: Uint32Array;
+  private readonly oldNormal: Float64Array;
+  private readonly oldTangent: Float64Array;
+  private readonly oldApproach: Float64Array;
+
+  constructor(n: number) {
+    this.n = n;
+    this.pointCapacity = maxManifoldPoints(n);
+    this.normalImpulse = new Float64Array(16 * this.pointCapacity);
+    this.approachSpeed = new Float64Array(16 * this.pointCapacity);
+    this.tangentImpulse = new Float64Array(16 * this.pointCapacity * n);
+    this.oldIds = new Uint32Array(this.pointCapacity);
+    this.oldNormal = new Float64Array(this.pointCapacity);
+    this.oldTangent = new Float64Array(this.pointCapacity * n);
+    this.oldApproach = new Float64Array(this.pointCapacity);
+    this.ensureSlots(16);
+  }
+
+  private ensureSlots(need: number): void {
+    if (need <= this.capacity) return;
+    let cap = Math.max(16, this.capacity);
+    while (cap < need) cap *= 2;
+    const P = this.pointCapacity;
+    this.keys = growFloat64(this.keys, cap);
+    this.friction = growFloat64(this.friction, cap);
+    this.restitution = growFloat64(this.restitution, cap);
+    this.normalImpulse = growFloat64(this.normalImpulse, cap * P);
+    this.approachSpeed = growFloat64(this.approachSpeed, cap * P);
+    this.tangentImpulse = growFloat64(this.tangentImpulse, cap * P * this.n);
+    const flags = new Uint8Array(cap);
+    flags.set(this.flags.subarray(0, Math.min(this.flags.length, cap)));
+    this.flags = flags;
+    this.freeSlots = growInt32(this.freeSlots, cap);
+    this.order = growInt32(this.order, cap);
+    this.orderNext = growInt32(this.orderNext, cap);
+    for (let s = cap - 1; s >= this.capacity; s -= 1) {
+      this.bodyA[s] = null;
+      this.bodyB[s] = null;
+      this.manifolds[s] = createManifold(this.n, this.pointCapacity);
+    }
+    // New slots are handed out lowest first.
+    for (let s = cap - 1; s >= this.capacity; s -= 1) this.freeSlots[this.freeCount++] = s;
+    this.capacity = cap;
+  }
+
+  private allocSlot(): number {
+    if (this.freeCount === 0) this.ensureSlots(this.capacity + 1);
+    return this.freeSlots[--this.freeCount];
+  }
+
+  private freeSlot(slot: number): void {
+    this.bodyA[slot] = null;
+    this.bodyB[slot] = null;
+    this.manifolds[slot].count = 0;
+    this.flags[slot] = 0;
+    this.freeSlots[this.freeCount++] = slot;
+  }
+
+  /**
+   * Merges the broadphase's changes into the set: `removed` and `added` are flat sorted pair
+   * lists [a0, b0, a1, b1, …] of proxy ids (a < b). `bodyOfProxy` maps a proxy id to its body.
+   * A pair of two bodies that cannot push each other (neither dynamic) gets no slot. Removing a
+   * pair without a slot is a no-op; removing a touching pair records an end event.
+   */
+  applyPairChanges(
+    removed: Int32Array,
+    removedCount: number,
+    added: Int32Array,
+    addedCount: number,
+    bodyOfProxy: readonly (Body | null)[],
+    events: ContactEvents,
+  ): void {
+    if (removedCount === 0 && addedCount === 0) return;
+    this.ensureSlots(this.count + addedCount);
+    const out = this.orderNext;
+    const order = this.order;
+    const keys = this.keys;
+    let o = 0;
+    let i = 0;
+    let r = 0;
+    let a = 0;
+    // Three sorted streams: live slots, removals, additions.
+    while (i < this.count || a < addedCount) {
+      const liveKey = i < this.count ? keys[order[i]] : Infinity;
+      const addKey = a < addedCount ? added[2 * a] * PAIR_KEY_SCALE + added[2 * a + 1] : Infinity;
+      if (liveKey <= addKey) {
+        // Skip removals below this key, then drop the live slot if it is removed.
+        while (r < removedCount && removed[2 * r] * PAIR_KEY_SCALE + removed[2 * r + 1] < liveKey) r += 1;
+        const slot = order[i];
+        i += 1;
+        if (r < removedCount && removed[2 * r] * PAIR_KEY_SCALE + removed[2 * r + 1] === liveKey) {
+          r += 1;
+          if (this.flags[slot] & CONTACT_TOUCHING) events.pushEnd(this.bodyA[slot]!, this.bodyB[slot]!);
+          this.freeSlot(slot);
+          continue;
+        }
+        if (liveKey === addKey) a += 1; // already live (cannot happen with a consistent broadphase)
+        out[o++] = slot;
+      } else {
+        const pa = added[2 * a];
+        const pb = added[2 * a + 1];
+        a += 1;
+        const A = bodyOfProxy[pa];
+        const B = bodyOfProxy[pb];
+        if (!A || !B || (A.motion !== MOTION_DYNAMIC && B.motion !== MOTION_DYNAMIC)) continue;
+        const slot = this.allocSlot();
+        keys[slot] = addKey;
+        this.bodyA[slot] = A;
+        this.bodyB[slot] = B;
+        this.manifolds[slot].count = 0;
+        this.flags[slot] = 0;
+        this.normalImpulse.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
+        this.approachSpeed.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
+        this.tangentImpulse.fill(0, slot * this.pointCapacity * this.n, (slot + 1) * this.pointCapacity * this.n);
+        // Mixing: geometric mean of friction, the larger restitution (Box2D's rules).
+        this.friction[slot] = Math.sqrt(A.material.friction * B.material.friction);
+        this.restitution[slot] = Math.max(A.material.restitution, B.material.restitution);
+        out[o++] = slot;
+      }
+    }
+    this.orderNext = order;
+    this.order = out;
+    this.count = o;
+  }
+
+  /** Removes every contact of `body` (when it leaves the world). Not for the step. */
+  removeBody(body: Body): void {
+    let o = 0;
+    for (let i = 0; i < this.count; i += 1) {
+      const slot = this.order[i];
+      if (this.bodyA[slot] === body || this.bodyB[slot] === body) this.freeSlot(slot);
+      else this.order[o++] = slot;
+    }
+    this.count = o;
+  }
+
+  /**
+   * Refreshes the manifold of every contact with a moving body (awake dynamic or kinematic) and
+   * carries the impulses of points whose feature id survived. `params.contactMargin` is the margin;
+   * `reach` adds the distance each body can close in one sub-step (speculative contacts), read
+   * from `reachOf` (per world index). Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
+   * previous touching state in CONTACT_WAS_TOUCHING. Allocates nothing.
+   */
+  updateManifolds(params: Readonly<Params>, reach: Float64Array, scratch: NarrowphaseScratch): void {
+    const margin = params.contactMargin;
+    const n = this.n;
+    const P = this.pointCapacity;
+    const oldIds = this.oldIds;
+    const oldNormal = this.oldNormal;
+    const oldTangent = this.oldTangent;
+    const oldApproach = this.oldApproach;
+    for (let i = 0; i < this.count; i += 1) {
+      const slot = this.order[i];
+      const A = this.bodyA[slot]!;
+      const B = this.bodyB[slot]!;
+      let flags = this.flags[slot] & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0;
+      if (!isMoving(A) && !isMoving(B)) {
+        // Asleep against asleep (or static): keep the manifold and the touching state.
+        this.flags[slot] = flags | (this.flags[slot] & CONTACT_TOUCHING);
+        continue;
+      }
+      const m = this.manifolds[slot];
+      const oldCount = m.count;
+      const ni = slot * P;
+      const ti = ni * n;
+      for (let p = 0; p < oldCount; p += 1) {
+        oldIds[p] = m.ids[p];
+        oldNormal[p] = this.normalImpulse[ni + p];
+        oldApproach[p] = this.approachSpeed[ni + p];
+        for (let c = 0; c < n; c += 1) oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
+      }
+      const pairMargin = margin + reach[A.worldIndex] + reach[B.worldIndex];
+      collide(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, pairMargin, scratch);
+      // A pose at the edge of overflow can give a manifold of NaN: drop it rather than let it
+      // carry non-finite impulses into the other body (the world then names the culprit).
+      let finite = 0;
+      for (let c = 0; c < n; c += 1) finite += m.normal[c] * 0;
+      for (let p = 0; p < m.count; p += 1) finite += m.separations[p] * 0 + m.points[p * n] * 0;
+      if (finite !== 0) m.count = 0;
+      let touching = false;
+      for (let p = 0; p < m.count; p += 1) {
+        if (m.separations[p] < margin) touching = true;
+        const id = m.ids[p];
+        let q = 0;
+        while (q < oldCount && oldIds[q] !== id) q += 1;
+        if (q < oldCount) {
+          this.normalImpulse[ni + p] = oldNormal[q];
+          this.approachSpeed[ni + p] = oldApproach[q];
+          for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = oldTangent[q * n + c];
+        } else {
+          this.normalImpulse[ni + p] = 0;
+          this.approachSpeed[ni + p] = 0;
+          for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = 0;
+        }
+      }
+      flags |= CONTACT_ACTIVE;
+      if (touching) flags |= CONTACT_TOUCHING;
+      this.flags[slot] = flags;
+    }
+  }
+}

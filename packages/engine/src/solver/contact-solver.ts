@@ -1,0 +1,577 @@
+/**
+ * The contact solver: sequential impulses on the manifolds of one sub-step, in n dimensions.
+ *
+ * Each manifold point gives n rows: one along the normal (a non-negative impulse) and n − 1
+ * friction rows spanning the tangent space. The friction impulses of a point are solved together
+ * and their vector is clamped to the disc |P_t| <= μ λ_n (a circular cone in any n; a box cone
+ * would favour the tangent axes). A row along the unit direction d at arms r_A, r_B has the
+ * angular Jacobians J = r ∧ d (bivectors), the effective mass
+ * 1 / (1/m_A + 1/m_B + J_A·I_A⁻¹J_A + J_B·I_B⁻¹J_B), and an impulse λ changes
+ * v_B += λ d/m_B, ω_B += λ I_B⁻¹J_B (the opposite for A); the momentum follows at the end as
+ * L_B += I_B Δω_B = Σ λ J_B.
+ *
+ * The pass order, Box2D's with Guendelman's shock propagation:
+ * 1. prepare: rows, effective masses, the normal velocity before the solve, the velocity target of
+ *    each point (Baumgarte for overlap beyond `penetrationSlop`, the speculative s/h for a gap);
+ * 2. warm start: the impulses of the last sub-step, matched by feature id, applied again;
+ * 3. `iterations` Gauss–Seidel passes: per manifold, friction then normal;
+ * 4. shock propagation (`shockIterations` passes, ground up): in a contact between layers, the
+ *    lower body acts as infinitely heavy, so a stack cannot push its base down;
+ * 5. restitution: touching points that approached faster than `restitutionThreshold` are given
+ *    the bounce velocity e·|v_n| (a speculative stop records v_n and bounces one sub-step later).
+ *
+ * Data live in flat Float64Arrays that grow by doubling; a sub-step allocates nothing.
+ *
+ * @module
+ */
+import type { Dims } from '@physin/algebra';
+import type { Body } from '../body.js';
+import type { ContactSet } from '../contacts/contact-set.js';
+import { CONTACT_ACTIVE, growFloat64, growInt32 } from '../contacts/contact-set.js';
+import { STEP_H } from '../integrator/step-constants.js';
+import type { Params } from '../params.js';
+import type { SolverBodies } from './solver-bodies.js';
+
+/** The numbers of one sub-step the solver reads (kept in an array: no boxed doubles). */
+const SOLVE_H = 0;
+const SOLVE_BIAS = 1;
+const SOLVE_SLOP = 2;
+const SOLVE_THRESHOLD = 3;
+/** The impulse handed to `apply` (through the array: a double argument would be boxed). */
+const SOLVE_LAMBDA = 4;
+/** Inner sweeps over one manifold in a shock pass. */
+const SHOCK_INNER_SWEEPS = 4;
+
+/** Sequential-impulse solver of the contacts of one world. */
+export class ContactSolver {
+  private readonly D: Dims;
+  private readonly n: number;
+  private readonly k: number;
+  /** Friction rows per point: n − 1. */
+  private readonly m: number;
+  /** Numbers per row: dir (n), J_A, J_B, I_A⁻¹J_A, I_B⁻¹J_B (k each), mass, K_A, K_B. */
+  private readonly RS: number;
+
+  /** Manifolds of this sub-step. */
+  private mfCount = 0;
+  private mfContact = new Int32Array(16);
+  private mfA = new Int32Array(16);
+  private mfB = new Int32Array(16);
+  private mfFirst = new Int32Array(16);
+  private mfPoints = new Int32Array(16);
+  private mfFriction = new Float64Array(16);
+  private mfRestitution = new Float64Array(16);
+  /** Manifold order of the shock passes (lowest layer first). */
+  private shockOrder = new Int32Array(16);
+  private layerCount = new Int32Array(16);
+
+  /** Points of this sub-step. */
+  private cpCount = 0;
+  private rows: Float64Array;
+  private target = new Float64Array(16);
+  private vn0 = new Float64Array(16);
+  private sep = new Float64Array(16);
+  private lambdaN = new Float64Array(16);
+  private lambdaT: Float64Array;
+  private maxLambda = new Float64Array(16);
+
+  private readonly constants = new Float64Array(5);
+  private readonly tangents: Float64Array;
+  private readonly tmp: Float64Array;
+  private readonly rA: Float64Array;
+  private readonly rB: Float64Array;
+
+  constructor(D: Dims) {
+    this.D = D;
+    this.n = D.n;
+    this.k = D.k;
+    this.m = D.n - 1;
+    this.RS = D.n + 4 * D.k + 3;
+    this.rows = new Float64Array(16 * D.n * this.RS);
+    this.lambdaT = new Float64Array(16 * this.m);
+    this.tangents = new Float64Array(this.m * D.n);
+    this.tmp = new Float64Array(this.m);
+    this.rA = new Float64Array(D.n);
+    this.rB = new Float64Array(D.n);
+  }
+
+  /** Count of contact points in the last sub-step's solve. */
+  get pointCount(): number {
+    return this.cpCount;
+  }
+
+  private ensureManifolds(need: number): void {
+    if (need <= this.mfContact.length) return;
+    this.mfContact = growInt32(this.mfContact, need);
+    this.mfA = growInt32(this.mfA, need);
+    this.mfB = growInt32(this.mfB, need);
+    this.mfFirst = growInt32(this.mfFirst, need);
+    this.mfPoints = growInt32(this.mfPoints, need);
+    this.mfFriction = growFloat64(this.mfFriction, need);
+    this.mfRestitution = growFloat64(this.mfRestitution, need);
+    this.shockOrder = growInt32(this.shockOrder, need);
+  }
+
+  private ensurePoints(need: number): void {
+    if (need <= this.target.length) return;
+    const keep = this.cpCount;
+    this.rows = growFloat64(this.rows, need * this.n * this.RS, keep * this.n * this.RS);
+    this.target = growFloat64(this.target, need, keep);
+    this.vn0 = growFloat64(this.vn0, need, keep);
+    this.sep = growFloat64(this.sep, need, keep);
+    this.lambdaN = growFloat64(this.lambdaN, need, keep);
+    this.lambdaT = growFloat64(this.lambdaT, need * this.m, keep * this.m);
+    this.maxLambda = growFloat64(this.maxLambda, need, keep);
+  }
+
+  /**
+   * Builds the rows of every active manifold with points. Sleeping bodies met here are woken (an
+   * awake body reached them). `maxContacts` > 0 stops adding manifolds once that many points are
+   * in. The sub-step h is read from `stepConstants[STEP_H]`. Returns the count of points.
+   */
+  prepare(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
+    const { n, k, m, RS } = this;
+    const c = this.constants;
+    const h = stepConstants[STEP_H];
+    c[SOLVE_H] = h;
+    c[SOLVE_BIAS] = p.biasFactor / h;
+    c[SOLVE_SLOP] = p.penetrationSlop;
+    c[SOLVE_THRESHOLD] = p.restitutionThreshold;
+    const warm = p.useWarmStart;
+    const maxPoints = p.maxContacts;
+    const P = contacts.pointCapacity;
+    const planeI = this.D.planeI;
+    const planeJ = this.D.planeJ;
+    const tangents = this.tangents;
+    const rA = this.rA;
+    const rB = this.rB;
+    this.mfCount = 0;
+    this.cpCount = 0;
+    for (let i = 0; i < contacts.count; i += 1) {
+      const slot = contacts.order[i];
+      if (!(contacts.flags[slot] & CONTACT_ACTIVE)) continue;
+      const man = contacts.manifolds[slot];
+      const count = man.count;
+      if (count === 0) continue;
+      if (maxPoints > 0 && this.cpCount + count > maxPoints) break;
+      const A = contacts.bodyA[slot] as Body;
+      const B = contacts.bodyB[slot] as Body;
+      if (A.sleeping) A.wake();
+      if (B.sleeping) B.wake();
+      const a = sb.slotOf(A);
+      const b = sb.slotOf(B);
+      this.ensureManifolds(this.mfCount + 1);
+      this.ensurePoints(this.cpCount + count);
+      const rows = this.rows;
+      const mf = this.mfCount++;
+      this.mfContact[mf] = slot;
+      this.mfA[mf] = a;
+      this.mfB[mf] = b;
+      this.mfFirst[mf] = this.cpCount;
+      this.mfPoints[mf] = count;
+      this.mfFriction[mf] = contacts.friction[slot];
+      this.mfRestitution[mf] = contacts.restitution[slot];
+      const N = man.normal;
+      // Tangent basis: the columns other than e_big of the Householder reflection taking e_big to
+      // ∓N, where big is N's largest component (orthonormal, and continuous in N away from ties).
+      let big = 0;
+      for (let d = 1; d < n; d += 1) if (Math.abs(N[d]) > Math.abs(N[big])) big = d;
+      const sgn = N[big] >= 0 ? 1 : -1;
+      const uu = 2 + 2 * Math.abs(N[big]);
+      for (let t = 0, col = 0; col < n; col += 1) {
+        if (col === big) continue;
+        const uc = N[col];
+        for (let d = 0; d < n; d += 1) {
+          const ud = d === big ? N[d] + sgn : N[d];
+          tangents[t * n + d] = (d === col ? 1 : 0) - (2 * ud * uc) / uu;
+        }
+        t += 1;
+      }
+      const xA = A.x;
+      const xB = B.x;
+      const imA = sb.invMass[a];
+      const imB = sb.invMass[b];
+      const IA = a * k * k;
+      const IB = b * k * k;
+      const IW = sb.invInertia;
+      const V = sb.v;
+      const W = sb.w;
+      for (let q = 0; q < count; q += 1) {
+        const cp = this.cpCount++;
+        for (let d = 0; d < n; d += 1) {
+          const pd = man.points[q * n + d];
+          rA[d] = pd - xA[d];
+          rB[d] = pd - xB[d];
+        }
+        for (let r = 0; r <= m; r += 1) {
+          const base = (cp * (m + 1) + r) * RS;
+          const dir = r === 0 ? N : tangents;
+          const off = r === 0 ? 0 : (r - 1) * n;
+          for (let d = 0; d < n; d += 1) rows[base + d] = dir[off + d];
+          // J = r ∧ dir
+          for (let pl = 0; pl < k; pl += 1) {
+            const pi = planeI[pl];
+            const pj = planeJ[pl];
+            const di = rows[base + pi];
+            const dj = rows[base + pj];
+            rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
+            rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
+          }
+          // I⁻¹J and K = 1/m + J·I⁻¹J per body
+          let KA = imA;
+          let KB = imB;
+          for (let row = 0; row < k; row += 1) {
+            let sa = 0;
+            let sbv = 0;
+            for (let col = 0; col < k; col += 1) {
+              sa += IW[IA + row * k + col] * rows[base + n + col];
+              sbv += IW[IB + row * k + col] * rows[base + n + k + col];
+            }
+            rows[base + n + 2 * k + row] = sa;
+            rows[base + n + 3 * k + row] = sbv;
+            KA += sa * rows[base + n + row];
+            KB += sbv * rows[base + n + k + row];
+          }
+          const K = KA + KB;
+          rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
+          rows[base + n + 4 * k + 1] = KA;
+          rows[base + n + 4 * k + 2] = KB;
+        }
+        // Normal velocity before the solve, and the velocity target of the point.
+        const base = cp * (m + 1) * RS;
+        let vn = 0;
+        for (let d = 0; d < n; d += 1) vn += rows[base + d] * (V[b * n + d] - V[a * n + d]);
+        for (let pl = 0; pl < k; pl += 1) {
+          vn += rows[base + n + k + pl] * W[b * k + pl] - rows[base + n + pl] * W[a * k + pl];
+        }
+        // Restitution bounces from the faster of the approach now and the approach a speculative
+        // contact stopped in the last sub-step (see ContactSet.approachSpeed).
+        this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + q]);
+        const s = man.separations[q];
+        this.sep[cp] = s;
+        this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
+        this.maxLambda[cp] = 0;
+        const ni = slot * P + q;
+        if (warm) {
+          this.lambdaN[cp] = contacts.normalImpulse[ni];
+          const ti = ni * n;
+          for (let t = 0; t < m; t += 1) {
+            let s2 = 0;
+            for (let d = 0; d < n; d += 1) s2 += contacts.tangentImpulse[ti + d] * tangents[t * n + d];
+            this.lambdaT[cp * m + t] = s2;
+          }
+        } else {
+          this.lambdaN[cp] = 0;
+          for (let t = 0; t < m; t += 1) this.lambdaT[cp * m + t] = 0;
+        }
+      }
+    }
+    return this.cpCount;
+  }
+
+  /**
+   * Applies the impulse constants[SOLVE_LAMBDA] of row `base` between slots a (−) and b (+);
+   * fa, fb (0 or 1) say which of the two bodies receive it.
+   */
+  private apply(sb: SolverBodies, base: number, a: number, b: number, fa: number, fb: number): void {
+    const { n, k } = this;
+    const rows = this.rows;
+    const lambda = this.constants[SOLVE_LAMBDA];
+    const V = sb.v;
+    const W = sb.w;
+    const la = lambda * fa * sb.invMass[a];
+    const lb = lambda * fb * sb.invMass[b];
+    for (let d = 0; d < n; d += 1) {
+      const dir = rows[base + d];
+      V[a * n + d] -= la * dir;
+      V[b * n + d] += lb * dir;
+    }
+    const ga = lambda * fa;
+    const gb = lambda * fb;
+    const ia = base + n + 2 * k;
+    const ib = base + n + 3 * k;
+    for (let pl = 0; pl < k; pl += 1) {
+      W[a * k + pl] -= ga * rows[ia + pl];
+      W[b * k + pl] += gb * rows[ib + pl];
+    }
+  }
+
+  /** Applies the warm-start impulses (normal and friction) of every point. */
+  warmStart(sb: SolverBodies): void {
+    const { m, RS } = this;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const a = this.mfA[mf];
+      const b = this.mfB[mf];
+      const first = this.mfFirst[mf];
+      const last = first + this.mfPoints[mf];
+      for (let cp = first; cp < last; cp += 1) {
+        const base = cp * (m + 1) * RS;
+        const ln = this.lambdaN[cp];
+        if (ln !== 0) {
+          this.constants[SOLVE_LAMBDA] = ln;
+          this.apply(sb, base, a, b, 1, 1);
+        }
+        for (let t = 0; t < m; t += 1) {
+          const lt = this.lambdaT[cp * m + t];
+          if (lt !== 0) {
+            this.constants[SOLVE_LAMBDA] = lt;
+            this.apply(sb, base + (t + 1) * RS, a, b, 1, 1);
+          }
+        }
+      }
+    }
+  }
+
+  /** Relative velocity (B − A) along row `base`. */
+  private rowVelocity(sb: SolverBodies, base: number, a: number, b: number, out: Float64Array, at: number): void {
+    const { n, k } = this;
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    let v = 0;
+    for (let d = 0; d < n; d += 1) v += rows[base + d] * (V[b * n + d] - V[a * n + d]);
+    const ja = base + n;
+    const jb = base + n + k;
+    for (let pl = 0; pl < k; pl += 1) v += rows[jb + pl] * W[b * k + pl] - rows[ja + pl] * W[a * k + pl];
+    out[at] = v;
+  }
+
+  /**
+   * One Gauss–Seidel pass over the manifolds (friction, then normal). With `shock`, manifolds go
+   * in layer order and the lower body of each contact between layers receives no impulse.
+   */
+  private pass(sb: SolverBodies, shock: boolean): void {
+    // A shock pass settles each manifold against its frozen lower body with a few inner sweeps:
+    // the block is then solved whole, so its points share the load evenly and the upper body
+    // gets no spurious spin from the order the points are visited in.
+    const inner = shock ? SHOCK_INNER_SWEEPS : 1;
+    for (let o = 0; o < this.mfCount; o += 1) {
+      const mf = shock ? this.shockOrder[o] : o;
+      for (let sweep = 0; sweep < inner; sweep += 1) this.solveManifold(sb, mf, shock, 1);
+    }
+  }
+
+  /**
+   * Friction, then normal, on the points of manifold `mf` (see {@link ContactSolver.pass}); the
+   * normal rows are swept `normalSweeps` times. The row velocity and the impulse are written out
+   * inline: this is the innermost loop of the engine.
+   */
+  private solveManifold(sb: SolverBodies, mf: number, shock: boolean, normalSweeps: number): void {
+    const n = this.n;
+    const k = this.k;
+    const m = this.m;
+    const RS = this.RS;
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    const a = this.mfA[mf];
+    const b = this.mfB[mf];
+    let fa = 1;
+    let fb = 1;
+    if (shock) {
+      const da = sb.depth[a];
+      const db = sb.depth[b];
+      if (da < db) fa = 0;
+      else if (db < da) fb = 0;
+    }
+    const ima = fa * sb.invMass[a];
+    const imb = fb * sb.invMass[b];
+    const va = a * n;
+    const vb = b * n;
+    const wa = a * k;
+    const wb = b * k;
+    const jA = n;
+    const jB = n + k;
+    const iA = n + 2 * k;
+    const iB = n + 3 * k;
+    const mu = this.mfFriction[mf];
+    const first = this.mfFirst[mf];
+    const last = first + this.mfPoints[mf];
+    const lambdaT = this.lambdaT;
+    const lambdaN = this.lambdaN;
+    const tmp = this.tmp;
+    if (mu > 0) {
+      for (let cp = first; cp < last; cp += 1) {
+        const maxT = mu * lambdaN[cp];
+        let norm2 = 0;
+        for (let t = 0; t < m; t += 1) {
+          const rb = (cp * (m + 1) + t + 1) * RS;
+          let vt = 0;
+          for (let d = 0; d < n; d += 1) vt += rows[rb + d] * (V[vb + d] - V[va + d]);
+          for (let pl = 0; pl < k; pl += 1) vt += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
+          const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
+          const nl = K > 0 ? lambdaT[cp * m + t] - vt / K : lambdaT[cp * m + t];
+          tmp[t] = nl;
+          norm2 += nl * nl;
+        }
+        const scale = norm2 > maxT * maxT ? maxT / Math.sqrt(norm2) : 1;
+        for (let t = 0; t < m; t += 1) {
+          const nl = tmp[t] * scale;
+          const dl = nl - lambdaT[cp * m + t];
+          lambdaT[cp * m + t] = nl;
+          if (dl === 0) continue;
+          const rb = (cp * (m + 1) + t + 1) * RS;
+          const la = ima * dl;
+          const lb = imb * dl;
+          for (let d = 0; d < n; d += 1) {
+            const dir = rows[rb + d];
+            V[va + d] -= la * dir;
+            V[vb + d] += lb * dir;
+          }
+          const ga = fa * dl;
+          const gb = fb * dl;
+          for (let pl = 0; pl < k; pl += 1) {
+            W[wa + pl] -= ga * rows[rb + iA + pl];
+            W[wb + pl] += gb * rows[rb + iB + pl];
+          }
+        }
+      }
+    }
+    for (let sweep = 0; sweep < normalSweeps; sweep += 1) {
+      for (let cp = first; cp < last; cp += 1) {
+        const rb = cp * (m + 1) * RS;
+        const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
+        if (!(K > 0)) continue;
+        let vn = 0;
+        for (let d = 0; d < n; d += 1) vn += rows[rb + d] * (V[vb + d] - V[va + d]);
+        for (let pl = 0; pl < k; pl += 1) vn += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
+        const old = lambdaN[cp];
+        const nl = Math.max(0, old + (this.target[cp] - vn) / K);
+        lambdaN[cp] = nl;
+        if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
+        const dl = nl - old;
+        if (dl === 0) continue;
+        const la = ima * dl;
+        const lb = imb * dl;
+        for (let d = 0; d < n; d += 1) {
+          const dir = rows[rb + d];
+          V[va + d] -= la * dir;
+          V[vb + d] += lb * dir;
+        }
+        const ga = fa * dl;
+        const gb = fb * dl;
+        for (let pl = 0; pl < k; pl += 1) {
+          W[wa + pl] -= ga * rows[rb + iA + pl];
+          W[wb + pl] += gb * rows[rb + iB + pl];
+        }
+      }
+    }
+  }
+
+  /** `iterations` Gauss–Seidel passes over every manifold. */
+  solve(sb: SolverBodies, iterations: number): void {
+    for (let it = 0; it < iterations; it += 1) this.pass(sb, false);
+  }
+
+  /**
+   * Shock propagation: layers counted from the immovable and kinematic bodies through the
+   * contacts (breadth first, by relaxation), then `passes` passes from the ground up in which the
+   * lower body of a contact between two layers is infinitely heavy.
+   */
+  shockPropagate(sb: SolverBodies, passes: number): void {
+    if (passes <= 0 || this.mfCount === 0) return;
+    const depth = sb.depth;
+    let changed = true;
+    let maxDepth = 0;
+    while (changed) {
+      changed = false;
+      for (let mf = 0; mf < this.mfCount; mf += 1) {
+        const a = this.mfA[mf];
+        const b = this.mfB[mf];
+        const da = depth[a];
+        const db = depth[b];
+        if (da >= 0 && (db < 0 || db > da + 1)) {
+          depth[b] = da + 1;
+          if (da + 1 > maxDepth) maxDepth = da + 1;
+          changed = true;
+        } else if (db >= 0 && (da < 0 || da > db + 1)) {
+          depth[a] = db + 1;
+          if (db + 1 > maxDepth) maxDepth = db + 1;
+          changed = true;
+        }
+      }
+    }
+    // Counting sort of the manifolds by their lower layer (unreached bodies, −1, go first).
+    this.layerCount = growInt32(this.layerCount, maxDepth + 3);
+    const cnt = this.layerCount;
+    cnt.fill(0, 0, maxDepth + 3);
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const layer = Math.min(depth[this.mfA[mf]], depth[this.mfB[mf]]) + 1;
+      cnt[layer + 1] += 1;
+    }
+    for (let l = 1; l < maxDepth + 3; l += 1) cnt[l] += cnt[l - 1];
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const layer = Math.min(depth[this.mfA[mf]], depth[this.mfB[mf]]) + 1;
+      this.shockOrder[cnt[layer]++] = mf;
+    }
+    for (let it = 0; it < passes; it += 1) this.pass(sb, true);
+  }
+
+  /**
+   * Restitution: each touching point (gap <= penetrationSlop) that approached faster than the
+   * threshold and pushed in this sub-step gets the normal velocity e·|v_n|, v_n the approach
+   * speed before the solve or the one a speculative stop recorded in the last sub-step. A point
+   * still short of the surface is only stopped there (speculative); it bounces in the next
+   * sub-step, from the surface, at the recorded speed: the same trajectory as a bounce at the
+   * moment of impact, a fraction of a sub-step later, so the apex and the energy are right.
+   */
+  restitution(sb: SolverBodies): void {
+    const { m, RS } = this;
+    const c = this.constants;
+    const slop = c[SOLVE_SLOP];
+    const threshold = c[SOLVE_THRESHOLD];
+    const tmp = this.tmp;
+    const rows = this.rows;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const e = this.mfRestitution[mf];
+      if (e === 0) continue;
+      const a = this.mfA[mf];
+      const b = this.mfB[mf];
+      const first = this.mfFirst[mf];
+      const last = first + this.mfPoints[mf];
+      for (let cp = first; cp < last; cp += 1) {
+        const v0 = this.vn0[cp];
+        if (v0 > -threshold || this.maxLambda[cp] === 0) continue;
+        const base = cp * (m + 1) * RS;
+        this.rowVelocity(sb, base, a, b, tmp, 0);
+        // A point still short of the surface (a speculative stop) bounces in the next sub-step,
+        // from where it touches, with the approach speed the stop recorded.
+        if (this.sep[cp] > slop) continue;
+        const goal = -e * v0;
+        const mass = rows[base + RS - 3];
+        const old = this.lambdaN[cp];
+        const nl = Math.max(0, old + mass * (goal - tmp[0]));
+        this.lambdaN[cp] = nl;
+        const d = nl - old;
+        if (d !== 0) {
+          this.constants[SOLVE_LAMBDA] = d;
+          this.apply(sb, base, a, b, 1, 1);
+        }
+      }
+    }
+  }
+
+  /** Stores the accumulated impulses in the contacts for the next sub-step's warm start. */
+  store(contacts: ContactSet): void {
+    const { n, m } = this;
+    const P = contacts.pointCapacity;
+    const tangents = this.rows;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const slot = this.mfContact[mf];
+      const first = this.mfFirst[mf];
+      const count = this.mfPoints[mf];
+      for (let q = 0; q < count; q += 1) {
+        const cp = first + q;
+        const ni = slot * P + q;
+        contacts.normalImpulse[ni] = this.lambdaN[cp];
+        contacts.approachSpeed[ni] = this.sep[cp] > this.constants[SOLVE_SLOP] && this.maxLambda[cp] > 0 ? this.vn0[cp] : 0;
+        const ti = ni * n;
+        for (let d = 0; d < n; d += 1) {
+          let s = 0;
+          for (let t = 0; t < m; t += 1) s += this.lambdaT[cp * m + t] * tangents[(cp * (m + 1) + t + 1) * this.RS + d];
+          contacts.tangentImpulse[ti + d] = s;
+        }
+      }
+    }
+  }
+}

@@ -10,6 +10,7 @@ import type { BodyOwner } from './body.js';
 import { computeBoundsUnchecked } from './collision/bounds.js';
 import { createBroadphase } from './collision/broadphase.js';
 import type { Broadphase } from './collision/broadphase.js';
+import type { BroadphaseBase } from './collision/broadphase-base.js';
 import { createPose } from './collision/manifold.js';
 import { createNarrowphaseScratch } from './collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
@@ -376,7 +377,8 @@ export class World {
       integrateVelocities(D, bodies, this.gravityValue, c, this.scratch.bivector);
       const unbounded = this.updateBroadphase();
       if (unbounded >= 0) this.failStep(bodies[unbounded]!, s, subSteps);
-      this.contacts.updateManifolds(p, this.reach, this.narrowScratch);
+      const bp = this.broadphase as BroadphaseBase;
+      this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax);
       this.solveContacts(p);
       const bad = integratePositions(D, bodies, c, this.scratch.rotor);
       if (bad >= 0) this.failStep(bodies[bad]!, s, subSteps);

@@ -54,8 +54,10 @@ export abstract class BroadphaseBase implements Broadphase {
   /** Per-id storage; boxes are flat, id `i` at [i*n, i*n + n). */
   protected capacity: number;
   protected flags: Uint8Array;
-  protected tightMin: Float64Array;
-  protected tightMax: Float64Array;
+  /** @internal Tight boxes per proxy id (n numbers each), as last given; read by the contact set. */
+  tightMin: Float64Array;
+  /** @internal See tightMin. */
+  tightMax: Float64Array;
   protected fatMin: Float64Array;
   protected fatMax: Float64Array;
   /** Half-space planes (unit normal, offset), stored at the id's slot. */

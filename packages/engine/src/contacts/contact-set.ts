@@ -13,9 +13,10 @@
  */
 import type { Body } from '../body.js';
 import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
-import { collide } from '../collision/collide.js';
+import { collideScratch } from '../collision/collide.js';
 import type { Manifold } from '../collision/manifold.js';
 import { createManifold, maxManifoldPoints } from '../collision/manifold.js';
+import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
 import type { ContactEvents } from './contact-events.js';
@@ -248,11 +249,17 @@ export class ContactSet {
   /**
    * Refreshes the manifold of every contact with a moving body (awake dynamic or kinematic) and
    * carries the impulses of points whose feature id survived. `params.contactMargin` is the margin;
-   * `reach` adds the distance each body can close in one sub-step (speculative contacts), read
-   * from `reachOf` (per world index). Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
+   * `reach` adds the distance each body can close in one sub-step (speculative contacts), per
+   * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
    * previous touching state in CONTACT_WAS_TOUCHING. Allocates nothing.
    */
-  updateManifolds(params: Readonly<Params>, reach: Float64Array, scratch: NarrowphaseScratch): void {
+  updateManifolds(
+    params: Readonly<Params>,
+    reach: Float64Array,
+    scratch: NarrowphaseScratch,
+    tightMin: Float64Array,
+    tightMax: Float64Array,
+  ): void {
     const margin = params.contactMargin;
     const n = this.n;
     const P = this.pointCapacity;
@@ -281,7 +288,27 @@ export class ContactSet {
         for (let c = 0; c < n; c += 1) oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
       }
       const pairMargin = margin + reach[A.worldIndex] + reach[B.worldIndex];
-      collide(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, pairMargin, scratch);
+      // The broadphase pairs fattened boxes; most such pairs in a pile are farther apart than the
+      // margin. Their tight boxes (already grown by the reaches) then miss each other by more
+      // than `margin` on some axis, and the narrowphase is skipped.
+      if (A.shape.kind !== 'halfspace' && B.shape.kind !== 'halfspace') {
+        const pa = A.proxyId * n;
+        const pb = B.proxyId * n;
+        let apart = false;
+        for (let c = 0; c < n; c += 1) {
+          if (tightMin[pa + c] - tightMax[pb + c] > margin || tightMin[pb + c] - tightMax[pa + c] > margin) {
+            apart = true;
+            break;
+          }
+        }
+        if (apart) {
+          m.count = 0;
+          this.flags[slot] = flags | CONTACT_ACTIVE;
+          continue;
+        }
+      }
+      scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
+      collideScratch(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, scratch);
       // A pose at the edge of overflow can give a manifold of NaN: drop it rather than let it
       // carry non-finite impulses into the other body (the world then names the culprit).
       let finite = 0;

@@ -1,5 +1,6 @@
 // Measures what World.step allocates in steady state. Run by tests/engine-allocation.test.ts as
-//   node --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 tests/engine-allocation.mjs [steps]
+//   node --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 tests/engine-allocation.mjs [steps] [joints]
+// (with `joints`: the joint scenes only, in a process of their own)
 // It imports the BUILT engine (dist/), as an application would, and prints one JSON line.
 //
 // Method: build a 100-body world (boxes and balls, spinning, moving, under gravity), warm it up so
@@ -18,7 +19,7 @@ if (typeof globalThis.gc !== 'function') {
 }
 
 const engine = await import('@physin/engine');
-const { World, Body, HyperBox, HyperSphere, HyperTorus, HalfSpace, dims } = engine;
+const { World, Body, HyperBox, HyperSphere, HyperTorus, HalfSpace, dims, PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint } = engine;
 
 const steps = Number(process.argv[2] ?? 10_000);
 const warmup = 3_000;
@@ -83,6 +84,48 @@ function makeStackWorld(n) {
   return world;
 }
 
+// A scene of joints (sleep off): a whipping chain of 8 point joints to the world (the tree solver),
+// a closed loop of 4 (Gauss–Seidel), a hinge with a motor and limits, a soft rope, a weld, a
+// subspace pin in the world frame (a box resting on a half-space, so contacts run alongside), far
+// enough apart that no new pair of bodies meets after the warm-up.
+function makeJointWorld(n) {
+  const D = dims(n);
+  const gravity = new Array(n).fill(0);
+  gravity[1] = -9.81;
+  const world = new World({ dimensions: n, gravity, params: { allowSleep: false } });
+  const at = (x, y, z = 0) => {
+    const p = new Array(n).fill(0);
+    p[0] = x;
+    p[1] = y;
+    p[2] = z;
+    return p;
+  };
+  const up = new Array(n).fill(0);
+  up[1] = 1;
+  world.addBody(new Body(D, { shape: HalfSpace(D, up, -20), mass: 0 }));
+  const ball = () => HyperSphere(0.1);
+  const links = [];
+  for (let i = 0; i < 8; i += 1) links.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(i + 0.5, 0) })));
+  world.addConstraint(new PointJoint(links[0], null, at(-0.5, 0), at(0, 0)));
+  for (let i = 1; i < 8; i += 1) world.addConstraint(new PointJoint(links[i - 1], links[i], at(0.5, 0), at(-0.5, 0)));
+  const ring = [];
+  for (let i = 0; i < 4; i += 1) ring.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(-30 + (i % 2), 2 + (i >> 1), 1) })));
+  world.addConstraint(new PointJoint(ring[0], null, at(0, 0), at(-30, 2, 1)));
+  for (let i = 0; i < 4; i += 1) world.addConstraint(new DistanceJoint(ring[i], ring[(i + 1) % 4], at(0, 0), at(0, 0)));
+  const base = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.3)), mass: 2, position: at(-40, 0, 3) }));
+  const arm = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.2)), mass: 1, position: at(-39, 0, 3) }));
+  world.addConstraint(new FixedJoint(base, null, at(0, 0), at(-40, 0, 3)));
+  world.addConstraint(new HingeJoint(base, arm, at(0.5, 0), at(-0.5, 0), { plane: 0, lowerAngle: -1, upperAngle: 1, motorSpeed: 2, maxMotorTorque: 5 }));
+  const bob = world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(-50, -1, 3) }));
+  world.addConstraint(new DistanceJoint(bob, null, at(0, 0), at(-50, 0, 3), { mode: 'rope', hertz: 4, damping: 0.5 }));
+  const pinned = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.25)), mass: 1, position: at(30, -19.75, -3), angularVelocity: Array.from({ length: D.k }, (_, p) => 0.5 + p) }));
+  const lock = [n - 1];
+  const planes = [];
+  for (let p = 0; p < D.k; p += 1) if (D.planeJ[p] === n - 1) planes.push(p);
+  world.addConstraint(new SubspaceJoint(pinned, null, { lockAxes: lock, lockPlanes: planes, worldFrame: true, localB: at(0, 0, -3) }));
+  return world;
+}
+
 const gcs = [];
 const observer = new PerformanceObserver((list) => {
   for (const entry of list.getEntries()) gcs.push({ start: entry.startTime, kind: entry.detail?.kind ?? entry.kind });
@@ -101,8 +144,15 @@ const scenes = [
   ['4', () => makeWorld(4)],
   ['stack3', () => makeStackWorld(3)],
   ['stack4', () => makeStackWorld(4)],
+  ['joints3', () => makeJointWorld(3)],
+  ['joints4', () => makeJointWorld(4)],
 ];
+// The joint scenes are measured in a process of their own (`node engine-allocation.mjs steps
+// joints`): after the other scenes the step's functions, optimised for those, meet new shapes and
+// are optimised again, which is the JIT's work, not the step's.
+const only = process.argv[3];
 for (const [name, make] of scenes) {
+  if ((only === 'joints') !== name.startsWith('joints')) continue;
   const world = make();
   const dt = 1 / 60;
   for (let s = 0; s < warmup; s += 1) world.step(dt);
@@ -134,7 +184,7 @@ for (const [name, make] of scenes) {
     }
     windows.push({ bytes: after - before, newSpace: spaces.new_space ?? 0, spaces, collections: inWindow.length, kinds: inWindow.map((g) => g.kind), msPerStep: (t1 - t0) / steps });
   }
-  results[name] = { steps, bodies: world.bodies.length, touching: world.touchingCount, windows };
+  results[name] = { steps, bodies: world.bodies.length, joints: world.constraints?.length ?? 0, touching: world.touchingCount, windows };
 }
 observer.disconnect();
 console.log(JSON.stringify(results));

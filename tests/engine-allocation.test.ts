@@ -16,7 +16,8 @@
  * Budget: 64 KB for the 10 000 steps, i.e. far less than one heap number (16 B) per step.
  *
  * The same is measured on a scene of resting contacts (a stack, balls and a torus on a
- * half-space, sleep off), so the broadphase, the narrowphase and the contact solver are covered.
+ * half-space, sleep off), so the broadphase, the narrowphase and the contact solver are covered,
+ * and on a scene of joints (every joint type, the tree solver and Gauss–Seidel, with contacts).
  *
  * The script imports packages/engine/dist; it is rebuilt here when any source of the algebra or
  * the engine is newer than it.
@@ -50,6 +51,7 @@ interface Window {
 interface Measure {
   steps: number;
   bodies: number;
+  joints?: number;
   touching: number;
   windows: Window[];
 }
@@ -67,6 +69,13 @@ beforeAll(() => {
     { cwd: root, encoding: 'utf8' },
   );
   results = JSON.parse(out.trim().split('\n').pop()!) as Record<string, Measure>;
+  // The joint scenes, in a process of their own (see the script).
+  const outJoints = execFileSync(
+    process.execPath,
+    ['--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/engine-allocation.mjs'), '10000', 'joints'],
+    { cwd: root, encoding: 'utf8' },
+  );
+  Object.assign(results, JSON.parse(outJoints.trim().split('\n').pop()!) as Record<string, Measure>);
 });
 
 describe('World.step allocates nothing in steady state (built engine, child process)', () => {
@@ -91,6 +100,17 @@ describe('World.step allocates nothing in steady state (built engine, child proc
       expect(r.bodies).toBe(15);
       // 9 stacked pairs (8 box–box + the ground), 4 balls and the torus on the ground.
       expect(r.touching).toBe(14);
+      for (const w of r.windows) {
+        expect(w.collections).toBe(0);
+        expect(w.newSpace).toBeLessThan(64 * 1024);
+      }
+      expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
+    });
+  }
+  for (const n of [3, 4]) {
+    it(`n = ${n}: 10 000 steps of a joint scene (a whipping chain, a closed loop, a weld, a motorised hinge with limits, a soft rope, a subspace pin, a box on a half-space; sleep off): the same bounds`, () => {
+      const r = results[`joints${n}`]!;
+      expect(r.joints).toBe(17);
       for (const w of r.windows) {
         expect(w.collections).toBe(0);
         expect(w.newSpace).toBeLessThan(64 * 1024);

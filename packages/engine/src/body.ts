@@ -235,6 +235,13 @@ export class Body {
   worldIndex = -1;
   /** @internal Solver slot of the current sub-step (0 = the immovable slot), or -1. */
   solverSlot = -1;
+  /**
+   * @internal The bodies this one must not collide with: the other bodies of its joints with
+   * collideConnected false (one entry per joint), or null.
+   */
+  jointPeers: Body[] | null = null;
+  /** @internal Count of joints of its world that hold this body. */
+  jointCount = 0;
   private listeners: CollisionListener[] | null = null;
   /** @internal Largest distance of a shape point from the centre of mass (m); 0 for a half-space. */
   boundingRadius = 0;

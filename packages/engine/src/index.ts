@@ -20,3 +20,4 @@ export * from './shapes/index.js';
 export { dims } from '@physin/algebra';
 export type { Dims } from '@physin/algebra';
 export * from './collision/index.js';
+export * from './joints/index.js';

@@ -44,6 +44,9 @@ import {
   STEP_ROTOR_TOLERANCE,
 } from './integrator/step-constants.js';
 import { integrateVelocities } from './integrator/velocities.js';
+import { Joint } from './joints/joint.js';
+import type { JointOwner } from './joints/joint.js';
+import { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams } from './params.js';
 import type { Params } from './params.js';
 
@@ -80,6 +83,9 @@ export interface WorldRayHit {
   /** Distance from the origin along the normalised direction (m). */
   readonly distance: number;
 }
+
+/** Passes of the joints' position projection per sub-step (see JointSolver.solvePositions). */
+const JOINT_POSITION_ITERATIONS = 3;
 
 const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
 
@@ -122,6 +128,19 @@ export class World {
   private readonly solverBodies: SolverBodies;
   private readonly solver: ContactSolver;
   private readonly islands = new Islands();
+  // ---- joints (see docs/joints.md) ----
+  private readonly jointList: Joint[] = [];
+  private jointView: readonly Joint[] = Object.freeze([]);
+  private readonly jointSolver: JointSolver;
+  /** Joints that broke in this step, their events sent after it. */
+  private readonly brokenJoints: Joint[] = [];
+  private readonly jointOwner: JointOwner = {
+    world: this,
+    onJointChanged: (joint: Joint): void => {
+      joint.a.wake();
+      joint.b?.wake();
+    },
+  };
   /** Per body (world index): the distance it can close in one sub-step (m), for speculative contacts. */
   private reach = new Float64Array(16);
   /** The broadphase boxes lag the poses (a step ran since the last query). */
@@ -187,6 +206,7 @@ export class World {
     this.contacts = new ContactSet(D.n);
     this.solverBodies = new SolverBodies(D);
     this.solver = new ContactSolver(D);
+    this.jointSolver = new JointSolver(D);
     this.events = new ContactEvents(D.n);
     this.collisionEvent = {
       type: 'begin',
@@ -323,6 +343,9 @@ export class World {
     if (index < 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is not in this world`);
     }
+    if (body.jointCount > 0) {
+      throw new RangeError(`${fn}: argument 'body' (${body.label}) is held by ${body.jointCount} joint(s) of this world; remove them first (World.removeConstraint)`);
+    }
     this.bodyList.splice(index, 1);
     for (let i = index; i < this.bodyList.length; i += 1) this.bodyList[i]!.worldIndex = i;
     this.contacts.removeBody(body);
@@ -336,6 +359,88 @@ export class World {
     return this;
   }
 
+  /** The joints of the world, in the order they were added (a frozen array, replaced when the list changes). */
+  get constraints(): readonly Joint[] {
+    return this.jointView;
+  }
+
+  /**
+   * Adds a joint (see docs/joints.md) and returns it. Its bodies wake. With collideConnected
+   * false (the default) the two bodies stop colliding with each other.
+   * @throws TypeError if `joint` is not a Joint; RangeError if its dimension differs, a body of it
+   *   is not in this world, it is already in this or another world, or it broke. Nothing changes.
+   */
+  addConstraint<J extends Joint>(joint: J): J {
+    const fn = 'World.addConstraint';
+    if (!(joint instanceof Joint)) {
+      throw new TypeError(`${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`);
+    }
+    if (joint.D.n !== this.n) {
+      throw new RangeError(`${fn}: argument 'joint' has n = ${joint.D.n} but the world has n = ${this.n}`);
+    }
+    if (joint.brokenFlag) throw new RangeError(`${fn}: argument 'joint' broke; build a new joint`);
+    if (joint.owner === this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is already in this world`);
+    if (joint.owner !== null) throw new RangeError(`${fn}: argument 'joint' already belongs to another world; remove it there first`);
+    if (joint.a.owner !== this.owner) {
+      throw new RangeError(`${fn}: body 'a' (${joint.a.label}) of the joint is not in this world; add it first (World.addBody)`);
+    }
+    if (joint.b !== null && joint.b.owner !== this.owner) {
+      throw new RangeError(`${fn}: body 'b' (${joint.b.label}) of the joint is not in this world; add it first (World.addBody)`);
+    }
+    joint.owner = this.jointOwner;
+    joint.lambda.fill(0);
+    this.jointList.push(joint);
+    this.jointView = Object.freeze(this.jointList.slice());
+    this.linkBodies(joint, 1);
+    joint.a.wake();
+    joint.b?.wake();
+    return joint;
+  }
+
+  /**
+   * Removes a joint; its bodies wake (and may collide with each other again).
+   * @throws TypeError if `joint` is not a Joint; RangeError if it is not in this world.
+   */
+  removeConstraint(joint: Joint): this {
+    const fn = 'World.removeConstraint';
+    if (!(joint instanceof Joint)) {
+      throw new TypeError(`${fn}: argument 'joint' must be a joint, got ${joint === null ? 'null' : typeof joint}`);
+    }
+    const index = joint.owner === this.jointOwner ? this.jointList.indexOf(joint) : -1;
+    if (index < 0) throw new RangeError(`${fn}: argument 'joint' is not in this world`);
+    this.detachJoint(joint, index);
+    joint.a.wake();
+    joint.b?.wake();
+    return this;
+  }
+
+  /** Takes a joint out of the list (it is known to be at `index`). */
+  private detachJoint(joint: Joint, index: number): void {
+    this.jointList.splice(index, 1);
+    this.jointView = Object.freeze(this.jointList.slice());
+    this.linkBodies(joint, -1);
+    joint.owner = null;
+  }
+
+  /** Counts the joint on its bodies (+1 or −1) and keeps their collision filter. */
+  private linkBodies(joint: Joint, sign: number): void {
+    const A = joint.a;
+    const B = joint.b;
+    A.jointCount += sign;
+    if (B === null) return;
+    B.jointCount += sign;
+    if (joint.collideConnected) return;
+    if (sign > 0) {
+      (A.jointPeers ??= []).push(B);
+      (B.jointPeers ??= []).push(A);
+    } else {
+      A.jointPeers!.splice(A.jointPeers!.indexOf(B), 1);
+      B.jointPeers!.splice(B.jointPeers!.indexOf(A), 1);
+      if (A.jointPeers!.length === 0) A.jointPeers = null;
+      if (B.jointPeers!.length === 0) B.jointPeers = null;
+    }
+  }
+
   /**
    * Advances the world by `dt` seconds (default `params.fixedTimeStep`) in `params.subSteps` equal
    * sub-steps h = dt / subSteps. Each sub-step, top to bottom:
@@ -344,7 +449,8 @@ export class World {
    * 2. broadphase: the boxes of the bodies that move, grown by the distance each can close in
    *    this sub-step, then the pairs that start or stop overlapping;
    * 3. narrowphase: the manifold of every pair with an awake body, impulses matched by feature id;
-   * 4. contact solver on v and L (warm start, iterations, shock propagation, restitution);
+   * 4. contact and joint solver on v and L (prepare, warm start, iterations — joints then contacts
+   *    in each — shock propagation, restitution, joint impulses stored and breaking checked);
    * 5. velocities → positions: x += h v, the midpoint rotor step under fixed L, rotor correction,
    *    ω rebuilt from L; kinematic bodies move by their own v and ω; each body is then checked for
    *    non-finite numbers;
@@ -380,15 +486,17 @@ export class World {
       const bp = this.broadphase as BroadphaseBase;
       this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax);
       this.solveContacts(p);
+      if (this.jointSolver.brokenCount > 0) this.breakJoints();
       const bad = integratePositions(D, bodies, c, this.scratch.rotor);
       if (bad >= 0) this.failStep(bodies[bad]!, s, subSteps);
+      if (this.jointSolver.count > 0) this.jointSolver.solvePositions(this.solverBodies, JOINT_POSITION_ITERATIONS);
       for (let b = 0; b < bodies.length; b += 1) {
         const body = bodies[b]!;
         if (body.motion !== MOTION_STATIC && !body.sleeping) this.updatePose(body);
       }
       this.recordEvents();
       if (p.allowSleep) {
-        this.islands.update(bodies, this.contacts, c, p, this.setSleeping);
+        this.islands.update(bodies, this.contacts, c, p, this.setSleeping, this.jointList);
       }
     }
     this.boundsStale = true;
@@ -396,6 +504,7 @@ export class World {
     this.clock[0] = this.clock[0]! + dt;
     this.clock[1] = this.clock[1]! + 1;
     if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
+    if (this.brokenJoints.length > 0) this.dispatchBroken();
     return this;
   }
 
@@ -463,6 +572,26 @@ export class World {
   }
 
   /**
+   * The Euclidean norm of `a`, without overflow for huge finite entries (then scaled by the
+   * largest); Infinity or NaN when an entry is not finite. (A small private method that V8
+   * inlines, so the double it returns is not boxed; the allocation test would show it.)
+   */
+  private norm(a: Float64Array): number {
+    let s = 0;
+    for (let i = 0; i < a.length; i += 1) s += a[i]! * a[i]!;
+    if (s < Infinity) return Math.sqrt(s);
+    let big = 0;
+    for (let i = 0; i < a.length; i += 1) big = Math.max(big, Math.abs(a[i]!));
+    if (!(big < Infinity)) return big;
+    s = 0;
+    for (let i = 0; i < a.length; i += 1) {
+      const q = a[i]! / big;
+      s += q * q;
+    }
+    return big * Math.sqrt(s);
+  }
+
+  /**
    * Stage 2: every moving body's box, grown by its reach h·(|v| + |ω|·radius) (the most its
    * surface can travel in the sub-step), and bodies moved by hand; then the broadphase's pair
    * changes go to the contact set. Returns the index of a body whose velocity is not finite (the
@@ -481,20 +610,10 @@ export class World {
         reach[b] = 0;
         continue;
       }
-      // |v| and |ω| scaled by their largest component, so a huge but finite velocity does not
-      // overflow in the square.
-      const v = body.v;
-      let vm = 0;
-      for (let i = 0; i < v.length; i += 1) vm = Math.max(vm, Math.abs(v[i]!));
-      let v2 = 0;
-      if (vm > 0) for (let i = 0; i < v.length; i += 1) v2 += (v[i]! / vm) ** 2;
-      const w = body.w;
-      let wm = 0;
-      for (let i = 0; i < w.length; i += 1) wm = Math.max(wm, Math.abs(w[i]!));
-      let w2 = 0;
-      if (wm > 0) for (let i = 0; i < w.length; i += 1) w2 += (w[i]! / wm) ** 2;
-      const r = h * (vm * Math.sqrt(v2) + wm * Math.sqrt(w2) * body.boundingRadius);
-      if (!(vm < Infinity) || !(wm < Infinity)) return b;
+      const speed = this.norm(body.v);
+      const spin = this.norm(body.w);
+      if (!(speed < Infinity) || !(spin < Infinity)) return b;
+      const r = h * (speed + spin * body.boundingRadius);
       if (!(r < Infinity)) continue; // finite but beyond reach of any box: nothing can meet it
       reach[b] = r;
       this.moveProxy(body);
@@ -505,18 +624,63 @@ export class World {
     return -1;
   }
 
-  /** Stage 4: the contact solver on the manifolds of this sub-step. */
+  /**
+   * Stage 4: the contact and joint solver of this sub-step. Contacts are prepared first, then the
+   * joints (which give their bodies solver slots); warm start joints then contacts; in each of the
+   * `iterations` passes the joints, then the contacts; shock propagation and restitution (contacts
+   * only); the impulses are stored (joints: loads and breaking) and v, L written back.
+   */
   private solveContacts(p: Readonly<Params>): void {
     const sb = this.solverBodies;
     const solver = this.solver;
+    const joints = this.jointSolver;
     sb.reset();
-    if (solver.prepare(this.contacts, sb, this.constants, p) === 0) return;
-    if (p.useWarmStart) solver.warmStart(sb);
-    solver.solve(sb, p.iterations);
-    if (p.useShockPropagation) solver.shockPropagate(sb, p.shockIterations);
-    solver.restitution(sb);
-    solver.store(this.contacts);
+    const points = solver.prepare(this.contacts, sb, this.constants, p);
+    const jointCount = this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
+    if (jointCount === 0) {
+      joints.brokenCount = 0;
+      if (points === 0) return;
+      if (p.useWarmStart) solver.warmStart(sb);
+      solver.solve(sb, p.iterations);
+    } else {
+      if (p.useWarmStart) {
+        joints.warmStart(sb);
+        if (points > 0) solver.warmStart(sb);
+      }
+      for (let it = 0; it < p.iterations; it += 1) {
+        joints.pass(sb);
+        if (points > 0) solver.iterate(sb);
+      }
+      joints.store();
+    }
+    if (points > 0) {
+      if (p.useShockPropagation) solver.shockPropagate(sb, p.shockIterations);
+      solver.restitution(sb);
+      solver.store(this.contacts);
+    }
     sb.writeBack();
+  }
+
+  /** The joints the solver found over their break load leave the world (events after the step). */
+  private breakJoints(): void {
+    const js = this.jointSolver;
+    for (let i = 0; i < js.brokenCount; i += 1) {
+      const joint = js.broken[i]!;
+      const index = this.jointList.indexOf(joint);
+      if (index < 0) continue;
+      joint.brokenFlag = true;
+      this.detachJoint(joint, index);
+      joint.a.wake();
+      joint.b?.wake();
+      this.brokenJoints.push(joint);
+    }
+    js.brokenCount = 0;
+  }
+
+  /** Sends the 'broken' events of this step. */
+  private dispatchBroken(): void {
+    const list = this.brokenJoints.splice(0, this.brokenJoints.length);
+    for (const joint of list) joint.emitBroken();
   }
 
   /** Stage 6a: begin / end events from the touching flags of this sub-step. */

@@ -277,6 +277,12 @@ export class ContactSet {
         this.flags[slot] = flags | (this.flags[slot] & CONTACT_TOUCHING);
         continue;
       }
+      if (A.jointPeers !== null && A.jointPeers.indexOf(B) >= 0) {
+        // A joint with collideConnected false holds the two: no contact between them.
+        this.manifolds[slot].count = 0;
+        this.flags[slot] = flags;
+        continue;
+      }
       const m = this.manifolds[slot];
       const oldCount = m.count;
       const ni = slot * P;

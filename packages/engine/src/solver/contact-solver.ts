@@ -586,6 +586,11 @@ export class ContactSolver {
     for (let it = 0; it < iterations; it += 1) this.pass(sb, false);
   }
 
+  /** One Gauss–Seidel pass over every manifold (the world interleaves it with the joints). */
+  iterate(sb: SolverBodies): void {
+    this.pass(sb, false);
+  }
+
   /**
    * Shock propagation: layers counted from the immovable and kinematic bodies through the
    * contacts (breadth first, by relaxation), then `passes` passes from the ground up in which the

@@ -1,7 +1,7 @@
 /**
  * Islands and sleep.
  *
- * An island is a set of dynamic bodies linked by touching contacts (static and kinematic bodies
+ * An island is a set of dynamic bodies linked by touching contacts and joints (static and kinematic bodies
  * do not link: a floor does not join every pile on it into one island). A body's sleep timer
  * counts the seconds it has moved slower than `sleepLinearVelocity` and `sleepAngularVelocity`;
  * an island whose slowest-to-settle body has waited `sleepTime` goes to sleep as a whole (its
@@ -44,6 +44,7 @@ export class Islands {
     constants: Float64Array,
     params: Readonly<Params>,
     setSleeping: (body: Body, asleep: boolean) => void,
+    joints: readonly { readonly a: Body; readonly b: Body | null }[] = [],
   ): void {
     const h = constants[STEP_H];
     const linear = params.sleepLinearVelocity;
@@ -78,6 +79,23 @@ export class Islands {
         if (ra !== rb) parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
       } else if (dynA && isMoving(B)) {
         A.sleepTimer = 0; // carried by a moving kinematic body
+      } else if (dynB && isMoving(A)) {
+        B.sleepTimer = 0;
+      }
+    }
+    // A joint links its two bodies as a touching contact does.
+    for (let j = 0; j < joints.length; j += 1) {
+      const A = joints[j].a;
+      const B = joints[j].b;
+      if (B === null) continue;
+      const dynA = A.motion === MOTION_DYNAMIC;
+      const dynB = B.motion === MOTION_DYNAMIC;
+      if (dynA && dynB) {
+        const ra = this.find(A.worldIndex);
+        const rb = this.find(B.worldIndex);
+        if (ra !== rb) parent[ra < rb ? rb : ra] = ra < rb ? ra : rb;
+      } else if (dynA && isMoving(B)) {
+        A.sleepTimer = 0;
       } else if (dynB && isMoving(A)) {
         B.sleepTimer = 0;
       }

@@ -1,0 +1,1046 @@
+/**
+ * The joint solver: the rows of every joint of a world in one sub-step, in flat preallocated
+ * storage, solved by sequential impulses interleaved with the contacts.
+ *
+ * A row is a direction d (n numbers, zero for an angular row) and two bivector Jacobians J_A, J_B
+ * (k numbers each): its velocity is Ċ = d·(v_B − v_A) + J_B·ω_B − J_A·ω_A, and an impulse λ
+ * changes v_B += λ d / m_B, ω_B += λ I_B⁻¹J_B (the opposite for A), as a contact row does.
+ *
+ * Each joint writes (see `Joint.buildRows`):
+ * - a block of equality rows (the point's n rows, the locked planes, the locked axes, a rod),
+ *   solved together every iteration: K = J M⁻¹ Jᵀ (m×m) is factored once per sub-step
+ *   (Cholesky; a pivot below 1e-12 of the largest diagonal drops its row), and each iteration
+ *   solves K Δ = −(Ċ + bias) exactly for the block, so a chain link meets its point constraint
+ *   in one visit whatever the arms and the inertia (a sequential sweep would need many);
+ * - then scalar rows: a motor (|λ| <= maxMotorTorque·h) and inequality rows (λ >= 0: hinge limits,
+ *   rope, strut), solved one by one BEFORE the block (Box2D's order: motor, limits, point).
+ *
+ * Position error: soft rows use the soft step (`soft.ts`); rigid rows a Baumgarte bias
+ * (constraintBias / h)·(|C| − constraintSlop)₊ per row, both clamped to constraintMaxBias (m/s or
+ * rad/s). An inequality row with slack C > 0 only forbids closing it faster than C / h
+ * (speculative, as contacts do).
+ *
+ * Accumulated impulses live in each joint (`Joint.lambda`, by a fixed key per row), so they
+ * warm-start the next sub-step and survive `setAnchors`. After the iterations `store` writes
+ * them back, computes the loads |λ_linear| / h and |λ_angular| / h (the motor excluded) and lists
+ * the joints whose load passed their break force or torque.
+ *
+ * Doubles travel in Float64Arrays, never as arguments of calls that are not inlined: the step
+ * allocates nothing.
+ *
+ * @module
+ */
+import type { Dims } from '@physin/algebra';
+import type { Body } from '../body.js';
+import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
+import { growFloat64, growInt32, isMoving } from '../contacts/contact-set.js';
+import { STEP_H } from '../integrator/step-constants.js';
+import type { Params } from '../params.js';
+import type { SolverBodies } from '../solver/solver-bodies.js';
+import { bivectorRotationInto, reverseInto } from './frames.js';
+import { JointTree } from './joint-tree.js';
+import type { Joint } from './joint.js';
+import { JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_DAMPING, JS_FORCE, JS_H, JS_HERTZ, JS_TORQUE } from './joint.js';
+import { SOFT_BIAS_RATE, SOFT_COUNT, SOFT_DAMPING, SOFT_H, SOFT_HERTZ, SOFT_IMPULSE_SCALE, SOFT_MASS_SCALE, softStep } from './soft.js';
+
+/** Row kind: linear (counts toward breakForce). */
+export const KIND_LINEAR = 0;
+/** Row kind: angular (counts toward breakTorque). */
+export const KIND_ANGULAR = 1;
+/** Row kind: motor (counts toward nothing). */
+export const KIND_MOTOR = 2;
+
+/** Row type: equality, part of the joint's block. */
+export const ROW_EQUAL = 0;
+/** Row type: inequality, λ >= 0. */
+export const ROW_INEQUAL = 1;
+/** Row type: motor, λ in [lo, hi] with a target velocity. */
+export const ROW_MOTOR = 2;
+
+/** Scalar scratch of the solver (`JointSolver.sc`). */
+export const SC_C = 0;
+/** Lower bound of a motor row's impulse. */
+export const SC_LO = 1;
+/** Upper bound of a motor row's impulse. */
+export const SC_HI = 2;
+/** Target velocity of a motor row. */
+export const SC_TARGET = 3;
+/** The sub-step h (s). */
+export const SC_H = 4;
+const SC_BIAS = 5;
+const SC_SLOP = 6;
+const SC_MAX_BIAS = 7;
+const SC_HERTZ = 8;
+const SC_DAMPING = 9;
+const SC_HERTZ_MAX = 10;
+/** constraintTolerance: the shortest direction a joint accepts (m). */
+export const SC_TOL = 12;
+/** The impulse handed to applyRow (through the array: a double argument would be boxed). */
+const SC_DL = 11;
+const SC_COUNT = 13;
+
+/** Gauss–Seidel passes of the end-of-sub-step velocity projection over the joints outside the tree. */
+const VELOCITY_PROJECTION_PASSES = 3;
+
+/** Below this fraction of the largest diagonal a Cholesky pivot drops its row. */
+const PIVOT_TOLERANCE = 1e-12;
+
+/** The joint rows of one world. */
+export class JointSolver {
+  /** The dimension tables. */
+  readonly D: Dims;
+  /** Count of dimensions. */
+  readonly n: number;
+  /** Count of planes. */
+  readonly k: number;
+  /** Numbers per row. */
+  readonly RS: number;
+  /** Offsets in a row. */
+  readonly OFF_JA: number;
+  readonly OFF_JB: number;
+  readonly OFF_MA: number;
+  readonly OFF_MB: number;
+  readonly OFF_S: number;
+
+  /** Joints solved in this sub-step. */
+  count = 0;
+  joints: Joint[] = [];
+  /** @internal */ jA = new Int32Array(16);
+  /** @internal */ jB = new Int32Array(16);
+  /** @internal */ jFirst = new Int32Array(16);
+  /** @internal */ jBlock = new Int32Array(16);
+  /** @internal */ jRows = new Int32Array(16);
+  /** @internal */ jFactor = new Int32Array(16);
+  /** @internal */ jSoft = new Int32Array(16);
+
+  /** Rows of this sub-step. */
+  rowCount = 0;
+  /** Row data, RS numbers per row (see the module). */
+  rows: Float64Array;
+  /** @internal */ lambdaRow = new Float64Array(16);
+  /**
+   * @internal Per row: the error the position projection aims at in this sub-step,
+   * C₀ − clamp(C₀, ±constraintMaxBias·h) (0 unless the error is beyond one sub-step's slide).
+   */
+  rowTarget = new Float64Array(16);
+  /** @internal Row count at prepare (the projection's rebuilt rows match it row for row). */
+  prepRows = 0;
+  /** @internal 1 while the rebuilt rows match the prepared ones (rowTarget applies). */
+  layoutOk = 1;
+  private rowKind = new Int32Array(16);
+  private rowKey = new Int32Array(16);
+  private factor = new Float64Array(64);
+  private factorSize = 0;
+  /** 1/m_A + 1/m_B of the joint whose masses were computed last. */
+  private blockMass = 0;
+
+  /** Joints that broke in the last `store` (their count in `brokenCount`). */
+  broken: Joint[] = [];
+  brokenCount = 0;
+
+  // ---- scratch the joint classes use to write rows (no allocation) ----
+  /** Scalars handed to the row writers (SC_* indices). */
+  readonly sc = new Float64Array(SC_COUNT);
+  /** Row direction (n). */
+  readonly dir: Float64Array;
+  /** World anchors and arms (n each). */
+  readonly pA: Float64Array;
+  readonly pB: Float64Array;
+  readonly armA: Float64Array;
+  readonly armB: Float64Array;
+  /** Bivector Jacobians of the next angular row (k each). */
+  readonly ja: Float64Array;
+  readonly jb: Float64Array;
+  /** Rotors: the joint frames, the relative rotor, a temporary (r each). */
+  readonly RJA: Float64Array;
+  readonly RJB: Float64Array;
+  readonly Q: Float64Array;
+  readonly T: Float64Array;
+  readonly U: Float64Array;
+  /** Rotation matrix of the frame R_JA (n×n) and its bivector rotation (k×k). */
+  readonly MJA: Float64Array;
+  readonly rot: Float64Array;
+  private readonly rotB: Float64Array;
+  /** Gradient of the locked rotor components (k×k: row p = plane, column q). */
+  readonly G: Float64Array;
+  readonly gA: Float64Array;
+  private readonly soft = new Float64Array(SOFT_COUNT);
+  /** The direct solver of the rigid joints that form a forest. */
+  private readonly tree: JointTree;
+  private vecC: Float64Array;
+  private vecX: Float64Array;
+
+  constructor(D: Dims) {
+    const { n, k, r } = D;
+    this.D = D;
+    this.n = n;
+    this.k = k;
+    this.OFF_JA = n;
+    this.OFF_JB = n + k;
+    this.OFF_MA = n + 2 * k;
+    this.OFF_MB = n + 3 * k;
+    this.OFF_S = n + 4 * k;
+    this.RS = n + 4 * k + 8;
+    this.rows = new Float64Array(16 * this.RS);
+    this.dir = new Float64Array(n);
+    this.pA = new Float64Array(n);
+    this.pB = new Float64Array(n);
+    this.armA = new Float64Array(n);
+    this.armB = new Float64Array(n);
+    this.ja = new Float64Array(k);
+    this.jb = new Float64Array(k);
+    this.RJA = new Float64Array(r);
+    this.RJB = new Float64Array(r);
+    this.Q = new Float64Array(r);
+    this.T = new Float64Array(r);
+    this.U = new Float64Array(r);
+    this.MJA = new Float64Array(n * n);
+    this.rot = new Float64Array(k * k);
+    this.rotB = new Float64Array(k * k);
+    this.G = new Float64Array(k * k);
+    this.gA = new Float64Array(k * k);
+    this.tree = new JointTree(D);
+    this.vecC = new Float64Array(n + k + 4);
+    this.vecX = new Float64Array(n + k + 4);
+  }
+
+  // ---- prepare ----
+
+  /**
+   * Builds the rows of every joint with a moving body (waking a sleeping partner), gives their
+   * bodies solver slots, factors the blocks and loads the warm-start impulses. Returns the count
+   * of joints solved.
+   */
+  prepare(joints: readonly Joint[], sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
+    const h = stepConstants[STEP_H];
+    const sc = this.sc;
+    sc[SC_H] = h;
+    sc[SC_BIAS] = p.constraintBias / h;
+    sc[SC_SLOP] = p.constraintSlop;
+    sc[SC_MAX_BIAS] = p.constraintMaxBias;
+    sc[SC_HERTZ] = p.constraintHertz;
+    sc[SC_DAMPING] = p.constraintDamping;
+    sc[SC_HERTZ_MAX] = p.constraintHertzRatio / h;
+    sc[SC_TOL] = p.constraintTolerance;
+    const warm = p.useWarmStart;
+    this.count = 0;
+    this.rowCount = 0;
+    this.factorSize = 0;
+    this.brokenCount = 0;
+    for (let i = 0; i < joints.length; i += 1) {
+      const joint = joints[i];
+      const A = joint.a;
+      const B = joint.b;
+      if (!isMoving(A) && (B === null || !isMoving(B))) continue;
+      if (A.sleeping) A.wake();
+      if (B !== null && B.sleeping) B.wake();
+      const j = this.count;
+      this.ensureJoints(j + 1);
+      this.count = j + 1;
+      this.joints[j] = joint;
+      this.jA[j] = sb.slotOf(A);
+      this.jB[j] = B === null ? 0 : sb.slotOf(B);
+      this.jFirst[j] = this.rowCount;
+      this.jBlock[j] = 0;
+      this.jRows[j] = 0;
+      joint.buildRows(this, j);
+      this.finishJoint(sb, j, warm);
+    }
+    this.prepRows = this.rowCount;
+    if (this.count > 0 && this.tree.build(this, sb) > 0) this.tree.factor(this, sb);
+    return this.count;
+  }
+
+  private ensureJoints(need: number): void {
+    if (need <= this.jA.length) return;
+    this.jA = growInt32(this.jA, need);
+    this.jB = growInt32(this.jB, need);
+    this.jFirst = growInt32(this.jFirst, need);
+    this.jBlock = growInt32(this.jBlock, need);
+    this.jRows = growInt32(this.jRows, need);
+    this.jFactor = growInt32(this.jFactor, need);
+    this.jSoft = growInt32(this.jSoft, need);
+  }
+
+  private ensureRows(need: number): void {
+    if (need <= this.lambdaRow.length) return;
+    const keep = this.rowCount;
+    this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);
+    this.lambdaRow = growFloat64(this.lambdaRow, need, keep);
+    this.rowTarget = growFloat64(this.rowTarget, need, keep);
+    this.rowKind = growInt32(this.rowKind, need, keep);
+    this.rowKey = growInt32(this.rowKey, need, keep);
+  }
+
+  /**
+   * Appends a row to joint j from the scratch: direction `dir` (linear rows; pass `linear` 1 to
+   * form J_A = armA ∧ dir and J_B = armB ∧ dir, 0 for an angular row whose Jacobians are in
+   * `ja`, `jb`), the position error sc[SC_C], and for a motor row sc[SC_LO], sc[SC_HI],
+   * sc[SC_TARGET]. `key` indexes the joint's `lambda`. Equality rows must come first.
+   */
+  addRow(j: number, key: number, kind: number, type: number, linear: number): void {
+    const { n, k, RS } = this;
+    const row = this.rowCount;
+    this.ensureRows(row + 1);
+    this.rowCount = row + 1;
+    this.jRows[j] += 1;
+    if (type === ROW_EQUAL) this.jBlock[j] += 1;
+    this.rowKind[row] = kind;
+    this.rowKey[row] = key;
+    const rows = this.rows;
+    const base = row * RS;
+    const ja = base + this.OFF_JA;
+    const jb = base + this.OFF_JB;
+    if (linear === 1) {
+      const dir = this.dir;
+      const rA = this.armA;
+      const rB = this.armB;
+      const planeI = this.D.planeI;
+      const planeJ = this.D.planeJ;
+      for (let d = 0; d < n; d += 1) rows[base + d] = dir[d];
+      for (let pl = 0; pl < k; pl += 1) {
+        const pi = planeI[pl];
+        const pj = planeJ[pl];
+        const di = dir[pi];
+        const dj = dir[pj];
+        rows[ja + pl] = rA[pi] * dj - rA[pj] * di;
+        rows[jb + pl] = rB[pi] * dj - rB[pj] * di;
+      }
+    } else {
+      for (let d = 0; d < n; d += 1) rows[base + d] = 0;
+      for (let pl = 0; pl < k; pl += 1) {
+        rows[ja + pl] = this.ja[pl];
+        rows[jb + pl] = this.jb[pl];
+      }
+    }
+    const S = base + this.OFF_S;
+    const sc = this.sc;
+    rows[S + 6] = sc[SC_C];
+    rows[S + 7] = type;
+    rows[S + 4] = type === ROW_MOTOR ? sc[SC_LO] : 0;
+    rows[S + 5] = type === ROW_MOTOR ? sc[SC_HI] : 0;
+    rows[S + 1] = type === ROW_MOTOR ? -sc[SC_TARGET] : 0;
+  }
+
+  /**
+   * I⁻¹J and the effective masses of joint j's rows, the Cholesky factor of its block, the bias
+   * of each row and the warm-start impulses.
+   */
+  private finishJoint(sb: SolverBodies, j: number, warm: boolean): void {
+    const RS = this.RS;
+    const first = this.jFirst[j];
+    const count = this.jRows[j];
+    const rows = this.rows;
+    this.rowMasses(sb, j);
+    const f0 = this.factorSize;
+    this.jFactor[j] = f0;
+    this.factorBlock(j, f0);
+    this.factorSize = f0 + this.jBlock[j] * this.jBlock[j];
+    // Softness of this joint in this sub-step.
+    const joint = this.joints[j];
+    const st = joint.state;
+    const sc = this.sc;
+    const soft = this.soft;
+    let hz = st[JS_HERTZ];
+    if (hz !== hz) hz = sc[SC_HERTZ];
+    if (hz > sc[SC_HERTZ_MAX]) hz = sc[SC_HERTZ_MAX];
+    let zeta = st[JS_DAMPING];
+    if (zeta !== zeta) zeta = sc[SC_DAMPING];
+    soft[SOFT_HERTZ] = hz;
+    soft[SOFT_DAMPING] = zeta;
+    soft[SOFT_H] = sc[SC_H];
+    softStep(soft);
+    const isSoft = hz > 0;
+    this.jSoft[j] = isSoft ? 1 : 0;
+    const biasRate = soft[SOFT_BIAS_RATE];
+    const ms = soft[SOFT_MASS_SCALE];
+    const is = soft[SOFT_IMPULSE_SCALE];
+    const beta = sc[SC_BIAS];
+    const slop = sc[SC_SLOP];
+    const maxBias = sc[SC_MAX_BIAS];
+    const h = sc[SC_H];
+    const lam = joint.lambda;
+    const maxCorr = maxBias * h;
+    for (let q = first; q < first + count; q += 1) {
+      const S = q * RS + this.OFF_S;
+      const C = rows[S + 6];
+      const type = rows[S + 7];
+      this.rowTarget[q] = C > maxCorr ? C - maxCorr : C < -maxCorr ? C + maxCorr : 0;
+      let bias = 0;
+      let rowMs = 1;
+      let rowIs = 0;
+      if (type === ROW_EQUAL) {
+        if (isSoft) {
+          bias = biasRate * C;
+          rowMs = ms;
+          rowIs = is;
+        } else if (C > slop) {
+          bias = beta * (C - slop);
+        } else if (C < -slop) {
+          bias = beta * (C + slop);
+        }
+        if (bias > maxBias) bias = maxBias;
+        else if (bias < -maxBias) bias = -maxBias;
+      } else if (type === ROW_INEQUAL) {
+        rows[S + 4] = 0;
+        rows[S + 5] = Infinity;
+        if (C >= 0) {
+          bias = C / h;
+        } else if (isSoft) {
+          bias = biasRate * C;
+          rowMs = ms;
+          rowIs = is;
+          if (bias < -maxBias) bias = -maxBias;
+        } else {
+          bias = C + slop < 0 ? beta * (C + slop) : 0;
+          if (bias < -maxBias) bias = -maxBias;
+        }
+      } else {
+        bias = rows[S + 1];
+      }
+      rows[S + 1] = bias;
+      rows[S + 2] = rowMs;
+      rows[S + 3] = rowIs;
+      let l0 = warm ? lam[this.rowKey[q]] : 0;
+      if (type !== ROW_EQUAL) {
+        if (l0 < rows[S + 4]) l0 = rows[S + 4];
+        if (l0 > rows[S + 5]) l0 = rows[S + 5];
+      }
+      this.lambdaRow[q] = l0;
+    }
+  }
+
+  /** I⁻¹J of joint j's rows and the effective mass of each (1 / J M⁻¹ Jᵀ, 0 if it cannot move). */
+  private rowMasses(sb: SolverBodies, j: number): void {
+    const { n, k, RS } = this;
+    const a = this.jA[j];
+    const b = this.jB[j];
+    const imA = sb.invMass[a];
+    const imB = sb.invMass[b];
+    const IW = sb.invInertia;
+    const IA = a * k * k;
+    const IB = b * k * k;
+    const first = this.jFirst[j];
+    const count = this.jRows[j];
+    const rows = this.rows;
+    const OFF_JA = this.OFF_JA;
+    const OFF_JB = this.OFF_JB;
+    const OFF_MA = this.OFF_MA;
+    const OFF_MB = this.OFF_MB;
+    for (let q = first; q < first + count; q += 1) {
+      const base = q * RS;
+      let K = 0;
+      for (let d = 0; d < n; d += 1) K += rows[base + d] * rows[base + d];
+      K *= imA + imB;
+      for (let row = 0; row < k; row += 1) {
+        let sa = 0;
+        let sbv = 0;
+        for (let col = 0; col < k; col += 1) {
+          sa += IW[IA + row * k + col] * rows[base + OFF_JA + col];
+          sbv += IW[IB + row * k + col] * rows[base + OFF_JB + col];
+        }
+        rows[base + OFF_MA + row] = sa;
+        rows[base + OFF_MB + row] = sbv;
+        K += sa * rows[base + OFF_JA + row] + sbv * rows[base + OFF_JB + row];
+      }
+      rows[base + this.OFF_S] = K > 0 ? 1 / K : 0;
+    }
+    this.blockMass = imA + imB;
+  }
+
+  /**
+   * The block's K = J M⁻¹ Jᵀ (m×m), factored in place at `f0` of `factor` (Cholesky, lower
+   * triangle, row-major); a pivot below PIVOT_TOLERANCE of the largest diagonal drops its row.
+   */
+  private factorBlock(j: number, f0: number): void {
+    const { n, k, RS } = this;
+    const m = this.jBlock[j];
+    if (m === 0) return;
+    const first = this.jFirst[j];
+    const rows = this.rows;
+    const OFF_JA = this.OFF_JA;
+    const OFF_JB = this.OFF_JB;
+    const OFF_MA = this.OFF_MA;
+    const OFF_MB = this.OFF_MB;
+    const im = this.blockMass;
+    if (f0 + m * m > this.factor.length) this.factor = growFloat64(this.factor, f0 + m * m, f0);
+    const F = this.factor;
+    let maxDiag = 0;
+    for (let r = 0; r < m; r += 1) {
+      const br = (first + r) * RS;
+      for (let c = 0; c <= r; c += 1) {
+        const bc = (first + c) * RS;
+        let s = 0;
+        for (let d = 0; d < n; d += 1) s += rows[br + d] * rows[bc + d];
+        s *= im;
+        for (let pl = 0; pl < k; pl += 1) {
+          s += rows[br + OFF_JA + pl] * rows[bc + OFF_MA + pl] + rows[br + OFF_JB + pl] * rows[bc + OFF_MB + pl];
+        }
+        F[f0 + r * m + c] = s;
+      }
+      if (F[f0 + r * m + r] > maxDiag) maxDiag = F[f0 + r * m + r];
+    }
+    const tol = maxDiag * PIVOT_TOLERANCE;
+    for (let c = 0; c < m; c += 1) {
+      let d = F[f0 + c * m + c];
+      for (let q = 0; q < c; q += 1) d -= F[f0 + c * m + q] * F[f0 + c * m + q];
+      if (!(d > tol)) {
+        // A dependent row (or a body that cannot turn that way): dropped from the block.
+        for (let r = c; r < m; r += 1) F[f0 + r * m + c] = 0;
+        continue;
+      }
+      const L = Math.sqrt(d);
+      F[f0 + c * m + c] = L;
+      for (let r = c + 1; r < m; r += 1) {
+        let s = F[f0 + r * m + c];
+        for (let q = 0; q < c; q += 1) s -= F[f0 + r * m + q] * F[f0 + c * m + q];
+        F[f0 + r * m + c] = s / L;
+      }
+    }
+  }
+
+  /** X = K⁻¹ C for the block factored at f0 (m rows); dropped rows get 0. */
+  private solveBlock(f0: number, m: number): void {
+    const F = this.factor;
+    const C = this.vecC;
+    const X = this.vecX;
+    for (let r = 0; r < m; r += 1) {
+      const L = F[f0 + r * m + r];
+      if (L === 0) {
+        X[r] = 0;
+        continue;
+      }
+      let s = C[r];
+      for (let q = 0; q < r; q += 1) s -= F[f0 + r * m + q] * X[q];
+      X[r] = s / L;
+    }
+    for (let r = m - 1; r >= 0; r -= 1) {
+      const L = F[f0 + r * m + r];
+      if (L === 0) {
+        X[r] = 0;
+        continue;
+      }
+      let s = X[r];
+      for (let q = r + 1; q < m; q += 1) s -= F[f0 + q * m + r] * X[q];
+      X[r] = s / L;
+    }
+  }
+
+  // ---- solve ----
+
+  /** Applies the impulse sc[SC_DL] of row q between slots a (−) and b (+). */
+  private applyRow(sb: SolverBodies, q: number, a: number, b: number): void {
+    const { n, k, RS } = this;
+    const dl = this.sc[SC_DL];
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    const base = q * RS;
+    const la = dl * sb.invMass[a];
+    const lb = dl * sb.invMass[b];
+    for (let d = 0; d < n; d += 1) {
+      const dir = rows[base + d];
+      V[a * n + d] -= la * dir;
+      V[b * n + d] += lb * dir;
+    }
+    const ia = base + this.OFF_MA;
+    const ib = base + this.OFF_MB;
+    for (let pl = 0; pl < k; pl += 1) {
+      W[a * k + pl] -= dl * rows[ia + pl];
+      W[b * k + pl] += dl * rows[ib + pl];
+    }
+  }
+
+  /** @internal Ċ of row q into out[at]. */
+  rowVelocityOf(sb: SolverBodies, q: number, a: number, b: number, out: Float64Array, at: number): void {
+    this.rowVelocity(sb, q, a, b, out, at);
+  }
+
+  /** Ċ of row q. */
+  private rowVelocity(sb: SolverBodies, q: number, a: number, b: number, out: Float64Array, at: number): void {
+    const { n, k, RS } = this;
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    const base = q * RS;
+    let v = 0;
+    for (let d = 0; d < n; d += 1) v += rows[base + d] * (V[b * n + d] - V[a * n + d]);
+    const ja = base + this.OFF_JA;
+    const jb = base + this.OFF_JB;
+    for (let pl = 0; pl < k; pl += 1) v += rows[jb + pl] * W[b * k + pl] - rows[ja + pl] * W[a * k + pl];
+    out[at] = v;
+  }
+
+  /** Applies the warm-start impulses of every row. */
+  warmStart(sb: SolverBodies): void {
+    for (let j = 0; j < this.count; j += 1) {
+      const a = this.jA[j];
+      const b = this.jB[j];
+      const first = this.jFirst[j];
+      const last = first + this.jRows[j];
+      for (let q = first; q < last; q += 1) {
+        const l = this.lambdaRow[q];
+        if (l === 0) continue;
+        this.sc[SC_DL] = l;
+        this.applyRow(sb, q, a, b);
+      }
+    }
+  }
+
+  /** One Gauss–Seidel pass over every joint: scalar rows (motor, limits), then the block. */
+  pass(sb: SolverBodies, scalars = 1): void {
+    const RS = this.RS;
+    const rows = this.rows;
+    const lambda = this.lambdaRow;
+    const C = this.vecC;
+    const X = this.vecX;
+    for (let j = 0; j < this.count; j += 1) {
+      const a = this.jA[j];
+      const b = this.jB[j];
+      const first = this.jFirst[j];
+      const m = this.jBlock[j];
+      const last = first + this.jRows[j];
+      // Scalar rows.
+      for (let q = first + m; q < last && scalars === 1; q += 1) {
+        const S = q * RS + this.OFF_S;
+        const mass = rows[S];
+        if (mass === 0) continue;
+        this.rowVelocity(sb, q, a, b, C, 0);
+        const old = lambda[q];
+        let nl = old - mass * rows[S + 2] * (C[0] + rows[S + 1]) - rows[S + 3] * old;
+        if (nl < rows[S + 4]) nl = rows[S + 4];
+        if (nl > rows[S + 5]) nl = rows[S + 5];
+        lambda[q] = nl;
+        const dl = nl - old;
+        if (dl === 0) continue;
+        this.sc[SC_DL] = dl;
+        this.applyRow(sb, q, a, b);
+      }
+      if (m === 0 || this.tree.role[j] !== 0) continue;
+      // The block: K Δ = −(Ċ + bias), soft-scaled.
+      for (let r = 0; r < m; r += 1) {
+        this.rowVelocity(sb, first + r, a, b, C, r);
+        C[r] += rows[(first + r) * RS + this.OFF_S + 1];
+      }
+      this.solveBlock(this.jFactor[j], m);
+      for (let r = 0; r < m; r += 1) {
+        const q = first + r;
+        const S = q * RS + this.OFF_S;
+        const old = lambda[q];
+        const dl = -rows[S + 2] * X[r] - rows[S + 3] * old;
+        lambda[q] = old + dl;
+        if (dl === 0) continue;
+        this.sc[SC_DL] = dl;
+        this.applyRow(sb, q, a, b);
+      }
+    }
+    if (this.tree.treeJoints > 0 && scalars === 1) this.tree.solveVelocities(this, sb);
+  }
+
+  /**
+   * Writes the accumulated impulses back to the joints, their loads (N, N·m), and lists in
+   * `broken` the joints whose load passed a break limit (the world removes them).
+   */
+  store(): void {
+    const h = this.sc[SC_H];
+    const lambda = this.lambdaRow;
+    for (let j = 0; j < this.count; j += 1) {
+      const joint = this.joints[j];
+      const lam = joint.lambda;
+      const first = this.jFirst[j];
+      const last = first + this.jRows[j];
+      let lin = 0;
+      let ang = 0;
+      for (let q = first; q < last; q += 1) {
+        const l = lambda[q];
+        lam[this.rowKey[q]] = l;
+        const kind = this.rowKind[q];
+        if (kind === KIND_LINEAR) lin += l * l;
+        else if (kind === KIND_ANGULAR) ang += l * l;
+      }
+      const st = joint.state;
+      st[JS_FORCE] = Math.sqrt(lin) / h;
+      st[JS_TORQUE] = Math.sqrt(ang) / h;
+      st[JS_H] = h;
+      const bf = st[JS_BREAK_FORCE];
+      const bt = st[JS_BREAK_TORQUE];
+      if ((bf > 0 && st[JS_FORCE] > bf) || (bt > 0 && st[JS_TORQUE] > bt)) {
+        if (this.brokenCount < this.broken.length) this.broken[this.brokenCount] = joint;
+        else this.broken.push(joint);
+        this.brokenCount += 1;
+      }
+    }
+  }
+
+  // ---- position projection ----
+
+  /**
+   * Position projection of the rigid joints after the positions were integrated (nonlinear
+   * Gauss–Seidel, Box2D v2's "solve positions"): `iterations` passes in which each rigid joint
+   * rebuilds its rows from the current poses and moves its bodies by the position impulse
+   * Δ = −K⁻¹ C of its block (and, for a violated limit or rope, of that row), x += M⁻¹ Jᵀ Δ and
+   * R ← exp(I⁻¹ J Δ) R. Velocities and L are not touched; ω is rebuilt from L under the new rotor.
+   * Soft joints are skipped (their error is their spring).
+   */
+  solvePositions(sb: SolverBodies, iterations: number): void {
+    if (this.count === 0) return;
+    // The poses lag the integrated x and R until the world updates them: bring them up first.
+    const K = this.D.kernels;
+    for (let j = 0; j < this.count; j += 1) {
+      const joint = this.joints[j];
+      const A = joint.a;
+      if (A.motion !== MOTION_STATIC && !A.sleeping) {
+        A.pose!.x.set(A.x);
+        K.toMatrix(A.pose!.M, A.R);
+      }
+      const B = joint.b;
+      if (B !== null && B.motion !== MOTION_STATIC && !B.sleeping) {
+        B.pose!.x.set(B.x);
+        K.toMatrix(B.pose!.M, B.R);
+      }
+    }
+    for (let it = 0; it < iterations; it += 1) {
+      // Rows from the current poses (the impulses were stored already).
+      this.rowCount = 0;
+      this.factorSize = 0;
+      for (let j = 0; j < this.count; j += 1) {
+        this.jFirst[j] = this.rowCount;
+        this.jBlock[j] = 0;
+        this.jRows[j] = 0;
+        if (this.joints[j].brokenFlag) continue;
+        this.joints[j].buildRows(this, j);
+      }
+      this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+      if (this.tree.build(this, sb) > 0) {
+        this.tree.factor(this, sb);
+        this.tree.solvePositions(this, sb);
+      }
+      for (let j = 0; j < this.count; j += 1) {
+        if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
+      }
+    }
+    for (let j = 0; j < this.count; j += 1) {
+      const joint = this.joints[j];
+      if (joint.a.motion === MOTION_DYNAMIC) joint.a.omegaFromMomentum();
+      if (joint.b !== null && joint.b.motion === MOTION_DYNAMIC) joint.b.omegaFromMomentum();
+    }
+    this.projectVelocities(sb);
+  }
+
+  /**
+   * Velocity projection at the end of the sub-step: the equality rows of the rigid joints,
+   * rebuilt at the final poses with the final world inertia, get Ċ = 0 (the tree exactly, the
+   * other rigid joints by `VELOCITY_PROJECTION_PASSES` block passes). v and L change by the
+   * projection impulse (L += I Δω, so ω = I⁻¹L stays exact). It removes the velocity the
+   * Baumgarte bias and the integration drift left along the constraint, so a locked plane or axis
+   * keeps ω and v at 0 at the end of every step. Its impulses are not accumulated.
+   */
+  private projectVelocities(sb: SolverBodies): void {
+    const { n, k } = this;
+    // Current inertia and velocities into the slots of the joint bodies.
+    for (let s2 = 1; s2 < sb.count; s2 += 1) {
+      const body = sb.bodies[s2]!;
+      if (body.motion !== MOTION_DYNAMIC || body.jointCount === 0) continue;
+      this.refreshSlot(sb, s2, body);
+    }
+    this.rowCount = 0;
+    this.factorSize = 0;
+    for (let j = 0; j < this.count; j += 1) {
+      this.jFirst[j] = this.rowCount;
+      this.jBlock[j] = 0;
+      this.jRows[j] = 0;
+      if (this.joints[j].brokenFlag || this.jSoft[j] !== 0) continue;
+      this.joints[j].buildRows(this, j);
+      // Scalar rows (motor, limits) take no part.
+      this.rowCount = this.jFirst[j] + this.jBlock[j];
+      this.jRows[j] = this.jBlock[j];
+      this.rowMasses(sb, j);
+      this.jFactor[j] = this.factorSize;
+      this.factorBlock(j, this.factorSize);
+      this.factorSize += this.jBlock[j] * this.jBlock[j];
+      for (let q = this.jFirst[j]; q < this.rowCount; q += 1) {
+        const S = q * this.RS + this.OFF_S;
+        this.rows[S + 1] = 0;
+        this.rows[S + 2] = 1;
+        this.rows[S + 3] = 0;
+        this.lambdaRow[q] = 0;
+      }
+    }
+    if (this.tree.build(this, sb) > 0) {
+      this.tree.factor(this, sb);
+      this.tree.solveVelocities(this, sb);
+    }
+    let gs = 0;
+    for (let j = 0; j < this.count; j += 1) if (this.tree.role[j] === 0 && this.jBlock[j] > 0) gs += 1;
+    if (gs > 0) for (let it = 0; it < VELOCITY_PROJECTION_PASSES; it += 1) this.pass(sb, 0);
+    // Back to the bodies: v, and L += I (ω − ω_body), ω from L.
+    for (let s2 = 1; s2 < sb.count; s2 += 1) {
+      const body = sb.bodies[s2]!;
+      if (body.motion !== MOTION_DYNAMIC || body.jointCount === 0) continue;
+      const v = body.v;
+      for (let d = 0; d < n; d += 1) v[d] = sb.v[s2 * n + d];
+      const w = body.w;
+      const L = body.L;
+      const I = sb.inertia;
+      const at = s2 * k * k;
+      for (let r = 0; r < k; r += 1) {
+        let dL = 0;
+        for (let c = 0; c < k; c += 1) dL += I[at + r * k + c] * (sb.w[s2 * k + c] - w[c]);
+        L[r] += dL;
+      }
+      body.omegaFromMomentum();
+    }
+  }
+
+  /** The slot's v, ω and world inertia from the body's current state (after the positions moved). */
+  private refreshSlot(sb: SolverBodies, slot: number, body: Body): void {
+    const { n, k } = this;
+    for (let d = 0; d < n; d += 1) sb.v[slot * n + d] = body.v[d];
+    for (let p = 0; p < k; p += 1) sb.w[slot * k + p] = body.w[p];
+    const rot = this.rotB;
+    bivectorRotationInto(this.D, rot, body.pose!.M);
+    const inv = body.invInertia;
+    const I = body.inertia;
+    const at = slot * k * k;
+    for (let r = 0; r < k; r += 1) {
+      for (let c = r; c < k; c += 1) {
+        let s2 = 0;
+        let t = 0;
+        for (let q = 0; q < k; q += 1) {
+          const qq = rot[r * k + q] * rot[c * k + q];
+          s2 += qq * inv[q];
+          t += qq * I[q];
+        }
+        sb.invInertia[at + r * k + c] = s2;
+        sb.invInertia[at + c * k + r] = s2;
+        sb.inertia[at + r * k + c] = t;
+        sb.inertia[at + c * k + r] = t;
+      }
+    }
+  }
+
+  private projectJoint(sb: SolverBodies, j: number): void {
+    const { n, k, RS } = this;
+    const saveRows = this.rowCount;
+    const saveFirst = this.jFirst[j];
+    const saveBlock = this.jBlock[j];
+    const saveCount = this.jRows[j];
+    this.jFirst[j] = saveRows;
+    this.jBlock[j] = 0;
+    this.jRows[j] = 0;
+    const joint = this.joints[j];
+    joint.buildRows(this, j);
+    this.rowMasses(sb, j);
+    const m = this.jBlock[j];
+    const first = saveRows;
+    const last = first + this.jRows[j];
+    const f0 = this.factorSize;
+    this.factorBlock(j, f0);
+    const rows = this.rows;
+    const S0 = this.OFF_S;
+    const X = this.vecX;
+    const C = this.vecC;
+    const ok = this.layoutOk;
+    const target = this.rowTarget;
+    for (let r = 0; r < m; r += 1) C[r] = (ok === 1 ? target[saveFirst + r] : 0) - rows[(first + r) * RS + S0 + 6];
+    this.solveBlock(f0, m);
+    // Scalar rows: a violated inequality pushes back alone (motors do nothing here).
+    for (let q = first + m; q < last; q += 1) {
+      const S = q * RS + S0;
+      const c = rows[S + 6];
+      const t = ok === 1 ? target[saveFirst + q - first] : 0;
+      X[q - first] = rows[S + 7] === ROW_INEQUAL && c < t ? (t - c) * rows[S] : 0;
+    }
+    const a = this.jA[j];
+    const b = this.jB[j];
+    const dxA = this.pA;
+    const dxB = this.pB;
+    const dA = this.ja;
+    const dB = this.jb;
+    dxA.fill(0);
+    dxB.fill(0);
+    dA.fill(0);
+    dB.fill(0);
+    for (let q = first; q < last; q += 1) {
+      const dl = X[q - first];
+      if (dl === 0) continue;
+      const base = q * RS;
+      for (let d = 0; d < n; d += 1) {
+        dxA[d] -= dl * rows[base + d];
+        dxB[d] += dl * rows[base + d];
+      }
+      for (let pl = 0; pl < k; pl += 1) {
+        dA[pl] -= dl * rows[base + this.OFF_MA + pl];
+        dB[pl] += dl * rows[base + this.OFF_MB + pl];
+      }
+    }
+    this.rowCount = saveRows;
+    this.jFirst[j] = saveFirst;
+    this.jBlock[j] = saveBlock;
+    this.jRows[j] = saveCount;
+    this.movePose(sb, joint.a, a, dxA, dA);
+    if (joint.b !== null) this.movePose(sb, joint.b, b, dxB, dB);
+  }
+
+  /** @internal x += dx, R ← exp(dθ) R, pose updated (a dynamic body). */
+  moveBody(body: Body, dx: Float64Array, dθ: Float64Array): void {
+    const x = body.x;
+    for (let d = 0; d < this.n; d += 1) x[d] += dx[d];
+    const K = this.D.kernels;
+    K.exp(this.T, dθ, 1);
+    K.mul(body.R, this.T, body.R);
+    const pose = body.pose!;
+    pose.x.set(x);
+    K.toMatrix(pose.M, body.R);
+  }
+
+  /** x += dx / m (the slot's inverse mass), R ← exp(dθ) R, pose updated (dynamic bodies only). */
+  private movePose(sb: SolverBodies, body: Body, slot: number, dx: Float64Array, dθ: Float64Array): void {
+    if (body.motion !== MOTION_DYNAMIC) return;
+    const im = sb.invMass[slot];
+    const x = body.x;
+    for (let d = 0; d < this.n; d += 1) x[d] += im * dx[d];
+    const K = this.D.kernels;
+    K.exp(this.T, dθ, 1);
+    K.mul(body.R, this.T, body.R);
+    const pose = body.pose!;
+    pose.x.set(x);
+    K.toMatrix(pose.M, body.R);
+  }
+
+  // ---- geometry helpers for the joint classes (no allocation) ----
+
+  /**
+   * World anchors pA, pB and arms armA = pA − x_A, armB = pB − x_B of joint j's bodies (for a
+   * joint to the world pB is the anchor itself and armB is 0).
+   */
+  anchors(joint: Joint): void {
+    const n = this.n;
+    const A = joint.a;
+    const M = A.pose!.M;
+    const la = joint.anchorA;
+    const xA = A.x;
+    for (let i = 0; i < n; i += 1) {
+      let s = 0;
+      for (let c = 0; c < n; c += 1) s += M[i * n + c] * la[c];
+      this.armA[i] = s;
+      this.pA[i] = xA[i] + s;
+    }
+    const B = joint.b;
+    const lb = joint.anchorB;
+    if (B === null) {
+      for (let i = 0; i < n; i += 1) {
+        this.armB[i] = 0;
+        this.pB[i] = lb[i];
+      }
+      return;
+    }
+    const MB = B.pose!.M;
+    const xB = B.x;
+    for (let i = 0; i < n; i += 1) {
+      let s = 0;
+      for (let c = 0; c < n; c += 1) s += MB[i * n + c] * lb[c];
+      this.armB[i] = s;
+      this.pB[i] = xB[i] + s;
+    }
+  }
+
+  /**
+   * The n equality rows of a point constraint (keys key0 .. key0 + n − 1) from `anchors`:
+   * C = pB − pA along each world axis.
+   */
+  pointRows(j: number, key0: number): void {
+    const n = this.n;
+    const dir = this.dir;
+    for (let d = 0; d < n; d += 1) {
+      dir.fill(0);
+      dir[d] = 1;
+      this.sc[SC_C] = this.pB[d] - this.pA[d];
+      this.addRow(j, key0 + d, KIND_LINEAR, ROW_EQUAL, 1);
+    }
+  }
+
+  /**
+   * The joint frames R_JA = R_A·C_A and R_JB = R_B·C_B (R_B = 1 for the world), the matrix of R_JA
+   * and its bivector rotation `rot`, and the relative rotor Q = R_JA~ R_JB.
+   */
+  frames(joint: Joint, CA: Float64Array, CB: Float64Array): void {
+    const K = this.D.kernels;
+    K.mul(this.RJA, joint.a.R, CA);
+    if (joint.b === null) this.RJB.set(CB);
+    else K.mul(this.RJB, joint.b.R, CB);
+    K.toMatrix(this.MJA, this.RJA);
+    bivectorRotationInto(this.D, this.rot, this.MJA);
+    reverseInto(this.D, this.T, this.RJA);
+    K.mul(this.Q, this.T, this.RJB);
+  }
+
+  /**
+   * Equality rows that hold the rotor components of the planes listed in `planes` (indices into
+   * the frame's planes) at 0, with the exact gradient of those components, so the rows hold at
+   * any angle and the free planes (two or more of them, even ones that do not commute) put no
+   * drift into the locked ones. `worldFrame` 0: Q = R_JA~ R_JB (planes of a's frame),
+   * Ċ_p = Σ_q Ω_q ⟨e_q Q⟩_p with Ω the relative angular velocity in a's frame; 1: W = R_JB R_JA~
+   * (planes of the world), Ċ_p = Σ_q ω_B,q ⟨e_q W⟩_p − ω_A,q ⟨W e_q⟩_p. C_p = −2⟨·⟩_p, the
+   * angle for small errors. Call `frames` first. Keys key0 + index in `planes`.
+   */
+  lockedPlaneRows(j: number, planes: Int32Array, worldFrame: number, key0: number): void {
+    const { k } = this;
+    const r = this.D.r;
+    const mulIndex = this.D.mulIndex;
+    const mulSign = this.D.mulSign;
+    const Q = this.Q;
+    if (worldFrame === 1) {
+      // W = R_JB R_JA~ (T holds R_JA~ after frames()).
+      this.D.kernels.mul(Q, this.RJB, this.T);
+    }
+    if (Q[0] < 0) for (let c = 0; c < r; c += 1) Q[c] = -Q[c];
+    const G = this.G;
+    const gA = this.gA;
+    G.fill(0);
+    gA.fill(0);
+    for (let q = 0; q < k; q += 1) {
+      const e = 1 + q;
+      for (let c = 0; c < r; c += 1) {
+        const qc = Q[c];
+        if (qc === 0) continue;
+        const left = mulIndex[e * r + c];
+        if (left >= 1 && left <= k) G[(left - 1) * k + q] += mulSign[e * r + c] * qc;
+        if (worldFrame === 1) {
+          const right = mulIndex[c * r + e];
+          if (right >= 1 && right <= k) gA[(right - 1) * k + q] += mulSign[c * r + e] * qc;
+        }
+      }
+    }
+    const rot = this.rot;
+    for (let i = 0; i < planes.length; i += 1) {
+      const p = planes[i];
+      if (worldFrame === 1) {
+        for (let q = 0; q < k; q += 1) {
+          this.jb[q] = G[p * k + q];
+          this.ja[q] = gA[p * k + q];
+        }
+      } else {
+        for (let row = 0; row < k; row += 1) {
+          let s = 0;
+          for (let q = 0; q < k; q += 1) s += rot[row * k + q] * G[p * k + q];
+          this.ja[row] = s;
+          this.jb[row] = s;
+        }
+      }
+      this.sc[SC_C] = -2 * Q[1 + p];
+      this.addRow(j, key0 + i, KIND_ANGULAR, ROW_EQUAL, 0);
+    }
+  }
+
+  /** Sets `ja` = `jb` = the world bivector of plane p of the frame R_JA (column p of `rot`), times `sign`. */
+  framePlane(p: number, sign: number): void {
+    const k = this.k;
+    const rot = this.rot;
+    for (let row = 0; row < k; row += 1) {
+      const v = sign * rot[row * k + p];
+      this.ja[row] = v;
+      this.jb[row] = v;
+    }
+  }
+}

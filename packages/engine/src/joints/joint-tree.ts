@@ -1,0 +1,604 @@
+/**
+ * The direct solver of the rigid joints that form a forest: Baraff's linear-time factorisation
+ * ("Linear-time dynamics using Lagrange multipliers", SIGGRAPH 1996) of the system
+ *
+ * ```
+ * [ M  Jᵀ ] [ Δv ]   [ 0 ]
+ * [ J  0  ] [ y  ] = [ c ]        Δλ = −y,  c = −(Ċ + bias)  (velocities)  or  −C  (positions)
+ * ```
+ *
+ * over the graph whose nodes are the dynamic bodies and the joints between two dynamic bodies
+ * (edges: a joint and its two bodies). Where that graph is a forest, a block LDLᵀ eliminated from
+ * the leaves to the root has no fill-in, so one solve costs O(nodes) small dense blocks and meets
+ * every equality row of every joint of the tree EXACTLY at once, whatever the mass ratios and
+ * the length of the chain: a Gauss–Seidel sweep, by contrast, propagates a load one link per
+ * iteration at a rate that worsens with the mass ratio.
+ *
+ * - A joint to the world (or to a static or kinematic body) is no node: its rows are folded into
+ *   its body's node as extra rows of a KKT block [M Jᵀ; J 0], so joint nodes always have two body
+ *   neighbours and the root is a body; every block D is then invertible when the rows are
+ *   independent. Blocks are factored by Gaussian elimination with complete pivoting; a pivot below
+ *   a relative 1e-12 drops its row (redundant rows, e.g. two welds to the world on one body).
+ * - A rigid joint that would close a cycle (the joint grid) and every soft joint stay with the
+ *   Gauss–Seidel solver; the rest of the forest is still solved directly.
+ * - Only the equality rows take part; limits, ropes, struts and motors are solved by the
+ *   Gauss–Seidel passes around it.
+ *
+ * Storage is flat and grows by doubling; nothing is allocated once the scene has been seen.
+ *
+ * @module
+ */
+import type { Dims } from '@physin/algebra';
+import { growFloat64, growInt32 } from '../contacts/contact-set.js';
+import type { SolverBodies } from '../solver/solver-bodies.js';
+import type { JointSolver } from './joint-solver.js';
+
+/** Relative size below which a pivot of a node block counts as zero. */
+const PIVOT_TOLERANCE = 1e-12;
+
+/** Joint roles in the forest. */
+const ROLE_GS = 0;
+const ROLE_NODE = 1;
+const ROLE_FOLDED = 2;
+
+/** The forest of the rigid joints of one sub-step and its factorisation. */
+export class JointTree {
+  private readonly n: number;
+  private readonly k: number;
+  /** k + n: the velocity size of a body. */
+  private readonly bs: number;
+
+  /** Per joint (solver index): ROLE_*. */
+  role = new Int32Array(16);
+  /** Count of joints solved by the tree (nodes and folded). */
+  treeJoints = 0;
+
+  // union–find over solver slots
+  private uf = new Int32Array(16);
+  // per slot: node index or −1
+  private slotNode = new Int32Array(16);
+  // nodes
+  private nodeCount = 0;
+  private nKind = new Int32Array(16); // 0 body, 1 joint
+  private nRef = new Int32Array(16); // slot or joint index
+  private nSize = new Int32Array(16);
+  private nParent = new Int32Array(16);
+  private nVisited = new Int32Array(16);
+  private nOrder = new Int32Array(16); // leaves first
+  private nD = new Int32Array(16); // offset of D
+  private nW = new Int32Array(16); // offset of W (s_i × s_parent)
+  private nV = new Int32Array(16); // offset in the vectors
+  private nPiv = new Int32Array(16); // offset of the pivots (2 s per node)
+  private fold = new Int32Array(16); // body node: first folded joint, −1
+  private foldNext = new Int32Array(16); // per joint: next folded joint of the same body
+  private adjHead = new Int32Array(16); // body node: first incident joint node (as an edge id)
+  private adjNext = new Int32Array(32); // per edge: next edge of the same body
+  private adjJoint = new Int32Array(32); // per edge: joint node
+  private stack = new Int32Array(16);
+  private mat = new Float64Array(256);
+  private vec = new Float64Array(64);
+  private piv = new Int32Array(64);
+  private col: Float64Array;
+  private hblk = new Float64Array(64);
+
+  constructor(D: Dims) {
+    this.n = D.n;
+    this.k = D.k;
+    this.bs = D.n + D.k;
+    this.col = new Float64Array(64);
+  }
+
+  /**
+   * Assigns the joints of `js` (after its prepare) to the forest or to Gauss–Seidel and builds
+   * the nodes, their parents and the elimination order. Returns the count of tree joints.
+   */
+  build(js: JointSolver, sb: SolverBodies): number {
+    const count = js.count;
+    this.role = growInt32(this.role, count);
+    this.foldNext = growInt32(this.foldNext, count);
+    const slots = sb.count;
+    this.uf = growInt32(this.uf, slots);
+    this.slotNode = growInt32(this.slotNode, slots);
+    for (let s = 0; s < slots; s += 1) {
+      this.uf[s] = s;
+      this.slotNode[s] = -1;
+    }
+    this.nodeCount = 0;
+    this.treeJoints = 0;
+    let edges = 0;
+    // Pass 1: roles, body nodes.
+    for (let j = 0; j < count; j += 1) {
+      this.role[j] = ROLE_GS;
+      if (js.jSoft[j] !== 0 || js.jBlock[j] === 0 || js.joints[j].brokenFlag) continue;
+      const a = js.jA[j];
+      const b = js.jB[j];
+      const dynA = a > 0 && sb.invMass[a] > 0;
+      const dynB = b > 0 && sb.invMass[b] > 0;
+      if (dynA && dynB) {
+        const ra = this.find(a);
+        const rb = this.find(b);
+        if (ra === rb) continue; // closes a cycle: Gauss–Seidel
+        this.uf[ra] = rb;
+        this.role[j] = ROLE_NODE;
+        this.bodyNode(a);
+        this.bodyNode(b);
+        edges += 2;
+      } else if (dynA || dynB) {
+        this.role[j] = ROLE_FOLDED;
+        this.bodyNode(dynA ? a : b);
+      } else {
+        continue;
+      }
+      this.treeJoints += 1;
+    }
+    if (this.treeJoints === 0) return 0;
+    // Pass 2: joint nodes, folded lists, adjacency.
+    const bodyNodes = this.nodeCount;
+    this.ensureNodes(bodyNodes + count);
+    this.adjNext = growInt32(this.adjNext, edges);
+    this.adjJoint = growInt32(this.adjJoint, edges);
+    for (let i = 0; i < bodyNodes; i += 1) {
+      this.fold[i] = -1;
+      this.adjHead[i] = -1;
+      this.nSize[i] = this.bs;
+    }
+    let e = 0;
+    for (let j = 0; j < count; j += 1) {
+      const role = this.role[j];
+      if (role === ROLE_GS) continue;
+      const a = js.jA[j];
+      const b = js.jB[j];
+      if (role === ROLE_FOLDED) {
+        const node = this.slotNode[a > 0 && sb.invMass[a] > 0 ? a : b];
+        this.foldNext[j] = this.fold[node];
+        this.fold[node] = j;
+        this.nSize[node] += js.jBlock[j];
+        continue;
+      }
+      const node = this.nodeCount++;
+      this.nKind[node] = 1;
+      this.nRef[node] = j;
+      this.nSize[node] = js.jBlock[j];
+      const na = this.slotNode[a];
+      const nb = this.slotNode[b];
+      this.adjJoint[e] = node;
+      this.adjNext[e] = this.adjHead[na];
+      this.adjHead[na] = e++;
+      this.adjJoint[e] = node;
+      this.adjNext[e] = this.adjHead[nb];
+      this.adjHead[nb] = e++;
+    }
+    // Pass 3: parents and the order (reverse preorder of a DFS from each root body).
+    const N = this.nodeCount;
+    this.stack = growInt32(this.stack, N + 1);
+    for (let i = 0; i < N; i += 1) this.nVisited[i] = 0;
+    let orderLen = 0;
+    const order = this.nOrder;
+    for (let root = 0; root < bodyNodes; root += 1) {
+      if (this.nVisited[root] !== 0) continue;
+      let top = 0;
+      this.stack[top++] = root;
+      this.nVisited[root] = 1;
+      this.nParent[root] = -1;
+      while (top > 0) {
+        const node = this.stack[--top];
+        order[orderLen++] = node;
+        for (let ed = this.adjHead[node]; ed >= 0; ed = this.adjNext[ed]) {
+          const jn = this.adjJoint[ed];
+          if (this.nVisited[jn] !== 0) continue;
+          this.nVisited[jn] = 1;
+          this.nParent[jn] = node;
+          order[orderLen++] = jn;
+          // The joint's other body.
+          const j = this.nRef[jn];
+          const other = this.slotNode[this.slotNode[js.jA[j]] === node ? js.jB[j] : js.jA[j]];
+          this.nVisited[other] = 1;
+          this.nParent[other] = jn;
+          this.stack[top++] = other;
+        }
+      }
+    }
+    // Reverse: leaves first.
+    for (let i = 0, r = orderLen - 1; i < r; i += 1, r -= 1) {
+      const t = order[i];
+      order[i] = order[r];
+      order[r] = t;
+    }
+    // Offsets.
+    let dOff = 0;
+    let wOff = 0;
+    let vOff = 0;
+    for (let i = 0; i < N; i += 1) {
+      const s = this.nSize[i];
+      this.nD[i] = dOff;
+      dOff += s * s;
+      this.nV[i] = vOff;
+      this.nPiv[i] = 2 * vOff;
+      vOff += s;
+    }
+    for (let i = 0; i < N; i += 1) {
+      const p = this.nParent[i];
+      this.nW[i] = dOff + wOff;
+      if (p >= 0) wOff += this.nSize[i] * this.nSize[p];
+    }
+    if (dOff + wOff > this.mat.length) this.mat = growFloat64(this.mat, dOff + wOff, 0);
+    this.vec = growFloat64(this.vec, vOff, 0);
+    this.piv = growInt32(this.piv, 2 * vOff, 0);
+    return this.treeJoints;
+  }
+
+  private find(i: number): number {
+    const uf = this.uf;
+    while (uf[i] !== i) {
+      uf[i] = uf[uf[i]];
+      i = uf[i];
+    }
+    return i;
+  }
+
+  private bodyNode(slot: number): void {
+    if (this.slotNode[slot] >= 0) return;
+    const node = this.nodeCount++;
+    this.ensureNodes(node + 1);
+    this.nKind[node] = 0;
+    this.nRef[node] = slot;
+    this.slotNode[slot] = node;
+  }
+
+  private ensureNodes(need: number): void {
+    if (need <= this.nKind.length) return;
+    this.nKind = growInt32(this.nKind, need);
+    this.nRef = growInt32(this.nRef, need);
+    this.nSize = growInt32(this.nSize, need);
+    this.nParent = growInt32(this.nParent, need);
+    this.nVisited = growInt32(this.nVisited, need);
+    this.nOrder = growInt32(this.nOrder, need);
+    this.nD = growInt32(this.nD, need);
+    this.nW = growInt32(this.nW, need);
+    this.nV = growInt32(this.nV, need);
+    this.nPiv = growInt32(this.nPiv, need);
+    this.fold = growInt32(this.fold, need);
+    this.adjHead = growInt32(this.adjHead, need);
+  }
+
+  // ---- the blocks of H ----
+
+  /**
+   * Entry (r, c) of the coupling block between joint node `jn`'s rows and body node `bn`'s
+   * columns: the Jacobian of row r for that body (+[d, J_B] for b, −[d, J_A] for a; 0 in the
+   * folded columns).
+   */
+  private coupling(js: JointSolver, j: number, slot: number, r: number, c: number): number {
+    const n = this.n;
+    if (c >= this.bs) return 0;
+    const base = (js.jFirst[j] + r) * js.RS;
+    const rows = js.rows;
+    const isB = js.jB[j] === slot;
+    const s = isB ? 1 : -1;
+    if (c < n) return s * rows[base + c];
+    return s * rows[base + (isB ? js.OFF_JB : js.OFF_JA) + (c - n)];
+  }
+
+  /** Writes H_ii of every node into its D block. */
+  private assemble(js: JointSolver, sb: SolverBodies): void {
+    const { n, k, bs } = this;
+    const mat = this.mat;
+    for (let i = 0; i < this.nodeCount; i += 1) {
+      const s = this.nSize[i];
+      const d0 = this.nD[i];
+      mat.fill(0, d0, d0 + s * s);
+      if (this.nKind[i] === 1) continue;
+      const slot = this.nRef[i];
+      const m = 1 / sb.invMass[slot];
+      for (let d = 0; d < n; d += 1) mat[d0 + d * s + d] = m;
+      const I = sb.inertia;
+      const i0 = slot * k * k;
+      for (let r = 0; r < k; r += 1) for (let c = 0; c < k; c += 1) mat[d0 + (n + r) * s + n + c] = I[i0 + r * k + c];
+      let row = bs;
+      for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
+        const m2 = js.jBlock[j];
+        for (let r = 0; r < m2; r += 1) {
+          for (let c = 0; c < bs; c += 1) {
+            const v = this.coupling(js, j, slot, r, c);
+            mat[d0 + (row + r) * s + c] = v;
+            mat[d0 + c * s + row + r] = v;
+          }
+        }
+        row += m2;
+      }
+    }
+  }
+
+  /**
+   * Factors the forest: for each node, leaves first, D_i = H_ii − Σ_children H_ic W_c (done as the
+   * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip.
+   */
+  factor(js: JointSolver, sb: SolverBodies): void {
+    this.assemble(js, sb);
+    const mat = this.mat;
+    let maxSize = 0;
+    for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];
+    this.col = growFloat64(this.col, maxSize, 0);
+    const col = this.col;
+    for (let o = 0; o < this.nodeCount; o += 1) {
+      const i = this.nOrder[o];
+      const s = this.nSize[i];
+      this.luFactor(this.nD[i], s, this.nPiv[i]);
+      const p = this.nParent[i];
+      if (p < 0) continue;
+      const sp = this.nSize[p];
+      const w0 = this.nW[i];
+      // W_i = D_i⁻¹ H_ip, column by column; then D_p −= H_pi W_i.
+      const jointIsChild = this.nKind[i] === 1;
+      const j = jointIsChild ? this.nRef[i] : this.nRef[p];
+      const slot = jointIsChild ? this.nRef[p] : this.nRef[i];
+      // H_ip (s × sp) once, then W_i = D_i⁻¹ H_ip column by column and D_p −= H_ipᵀ W_i.
+      this.hblk = growFloat64(this.hblk, s * sp, 0);
+      const H = this.hblk;
+      for (let r = 0; r < s; r += 1) {
+        for (let c = 0; c < sp; c += 1) H[r * sp + c] = jointIsChild ? this.coupling(js, j, slot, r, c) : this.coupling(js, j, slot, c, r);
+      }
+      for (let c = 0; c < sp; c += 1) {
+        for (let r = 0; r < s; r += 1) col[r] = H[r * sp + c];
+        this.luSolve(this.nD[i], s, this.nPiv[i], col, 0);
+        for (let r = 0; r < s; r += 1) mat[w0 + r * sp + c] = col[r];
+      }
+      const dp = this.nD[p];
+      for (let q = 0; q < s; q += 1) {
+        for (let r = 0; r < sp; r += 1) {
+          const h = H[q * sp + r];
+          if (h === 0) continue;
+          const wq = w0 + q * sp;
+          const dr = dp + r * sp;
+          for (let c = 0; c < sp; c += 1) mat[dr + c] -= h * mat[wq + c];
+        }
+      }
+    }
+  }
+
+  /**
+   * Solves H x = b with b already in `vec` (body nodes: 0 then the folded rows' c; joint nodes:
+   * c), leaving x there. H = L D Lᵀ with L_pi = W_iᵀ: forward z_p −= W_iᵀ z_i (leaves first) and
+   * w_i = D_i⁻¹ z_i, then backward x_i = w_i − W_i x_p (root first).
+   */
+  private solveVec(): void {
+    const mat = this.mat;
+    const vec = this.vec;
+    const N = this.nodeCount;
+    for (let o = 0; o < N; o += 1) {
+      const i = this.nOrder[o];
+      const s = this.nSize[i];
+      const v0 = this.nV[i];
+      const p = this.nParent[i];
+      if (p >= 0) {
+        const sp = this.nSize[p];
+        const w0 = this.nW[i];
+        const vp = this.nV[p];
+        for (let c = 0; c < sp; c += 1) {
+          let sum = 0;
+          for (let r = 0; r < s; r += 1) sum += mat[w0 + r * sp + c] * vec[v0 + r];
+          vec[vp + c] -= sum;
+        }
+      }
+      this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0);
+    }
+    for (let o = N - 1; o >= 0; o -= 1) {
+      const i = this.nOrder[o];
+      const p = this.nParent[i];
+      if (p < 0) continue;
+      const s = this.nSize[i];
+      const sp = this.nSize[p];
+      const v0 = this.nV[i];
+      const w0 = this.nW[i];
+      const vp = this.nV[p];
+      for (let r = 0; r < s; r += 1) {
+        let sum = 0;
+        for (let c = 0; c < sp; c += 1) sum += mat[w0 + r * sp + c] * vec[vp + c];
+        vec[v0 + r] -= sum;
+      }
+    }
+  }
+
+  /**
+   * Fills the right-hand side: for every equality row of the tree, c = −(Ċ + bias) (`positions`
+   * 0, velocities from the solver bodies) or −C (`positions` 1); zeros for the body unknowns.
+   */
+  private rhs(js: JointSolver, sb: SolverBodies, positions: number): void {
+    const vec = this.vec;
+    const bs = this.bs;
+    const scratch = this.col;
+    for (let i = 0; i < this.nodeCount; i += 1) {
+      const v0 = this.nV[i];
+      if (this.nKind[i] === 1) {
+        this.rowsRhs(js, sb, this.nRef[i], v0, positions, scratch);
+        continue;
+      }
+      for (let c = 0; c < bs; c += 1) vec[v0 + c] = 0;
+      let row = v0 + bs;
+      for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
+        this.rowsRhs(js, sb, j, row, positions, scratch);
+        row += js.jBlock[j];
+      }
+    }
+  }
+
+  private rowsRhs(js: JointSolver, sb: SolverBodies, j: number, at: number, positions: number, scratch: Float64Array): void {
+    const vec = this.vec;
+    const first = js.jFirst[j];
+    const m = js.jBlock[j];
+    const S = js.OFF_S;
+    const rows = js.rows;
+    for (let r = 0; r < m; r += 1) {
+      const base = (first + r) * js.RS;
+      if (positions === 1) {
+        vec[at + r] = (js.layoutOk === 1 ? js.rowTarget[first + r] : 0) - rows[base + S + 6];
+      } else {
+        js.rowVelocityOf(sb, first + r, js.jA[j], js.jB[j], scratch, 0);
+        vec[at + r] = -(scratch[0] + rows[base + S + 1]);
+      }
+    }
+  }
+
+  /** Takes the impulses of the solution: λ −= y for every tree row. */
+  private takeImpulses(js: JointSolver): void {
+    const vec = this.vec;
+    const lambda = js.lambdaRow;
+    for (let i = 0; i < this.nodeCount; i += 1) {
+      const v0 = this.nV[i];
+      if (this.nKind[i] === 1) {
+        const j = this.nRef[i];
+        const first = js.jFirst[j];
+        for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] -= vec[v0 + r];
+        continue;
+      }
+      let row = v0 + this.bs;
+      for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
+        const first = js.jFirst[j];
+        for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] -= vec[row + r];
+        row += js.jBlock[j];
+      }
+    }
+  }
+
+  /** One exact velocity solve of every equality row of the forest (a pass of the solver). */
+  solveVelocities(js: JointSolver, sb: SolverBodies): void {
+    if (this.treeJoints === 0) return;
+    this.rhs(js, sb, 0);
+    this.solveVec();
+    const { n, k } = this;
+    const vec = this.vec;
+    const V = sb.v;
+    const W = sb.w;
+    for (let i = 0; i < this.nodeCount; i += 1) {
+      if (this.nKind[i] === 1) continue;
+      const slot = this.nRef[i];
+      const v0 = this.nV[i];
+      for (let d = 0; d < n; d += 1) V[slot * n + d] += vec[v0 + d];
+      for (let p = 0; p < k; p += 1) W[slot * k + p] += vec[v0 + n + p];
+    }
+    this.takeImpulses(js);
+  }
+
+  /**
+   * One exact linearised position projection of the forest (after `build` and `factor` on rows
+   * built from the current poses): each body moves by Δx and turns by Δθ such that J [Δx; Δθ] = −C.
+   */
+  solvePositions(js: JointSolver, sb: SolverBodies): void {
+    if (this.treeJoints === 0) return;
+    this.rhs(js, sb, 1);
+    this.solveVec();
+    const { n, k } = this;
+    const vec = this.vec;
+    const dx = js.pA;
+    const dθ = js.ja;
+    for (let i = 0; i < this.nodeCount; i += 1) {
+      if (this.nKind[i] === 1) continue;
+      const v0 = this.nV[i];
+      for (let d = 0; d < n; d += 1) dx[d] = vec[v0 + d];
+      for (let p = 0; p < k; p += 1) dθ[p] = vec[v0 + n + p];
+      js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
+    }
+  }
+
+  // ---- dense LU with complete pivoting, in place at mat[d0], s×s; pivots at piv[p0] (rows, cols) ----
+
+  private luFactor(d0: number, s: number, p0: number): void {
+    const A = this.mat;
+    const piv = this.piv;
+    let maxAbs = 0;
+    for (let q = 0; q < s * s; q += 1) {
+      const v = Math.abs(A[d0 + q]);
+      if (v > maxAbs) maxAbs = v;
+    }
+    const tol = maxAbs * PIVOT_TOLERANCE;
+    for (let c = 0; c < s; c += 1) {
+      // Complete pivoting.
+      let br = c;
+      let bc = c;
+      let best = -1;
+      for (let r = c; r < s; r += 1) {
+        for (let q = c; q < s; q += 1) {
+          const v = Math.abs(A[d0 + r * s + q]);
+          if (v > best) {
+            best = v;
+            br = r;
+            bc = q;
+          }
+        }
+      }
+      piv[p0 + c] = br;
+      piv[p0 + s + c] = bc;
+      if (br !== c) {
+        for (let q = 0; q < s; q += 1) {
+          const t = A[d0 + c * s + q];
+          A[d0 + c * s + q] = A[d0 + br * s + q];
+          A[d0 + br * s + q] = t;
+        }
+      }
+      if (bc !== c) {
+        for (let r = 0; r < s; r += 1) {
+          const t = A[d0 + r * s + c];
+          A[d0 + r * s + c] = A[d0 + r * s + bc];
+          A[d0 + r * s + bc] = t;
+        }
+      }
+      const pv = A[d0 + c * s + c];
+      if (!(Math.abs(pv) > tol)) {
+        // The rest is (numerically) zero: those unknowns are dropped.
+        for (let r = c; r < s; r += 1) for (let q = c; q < s; q += 1) A[d0 + r * s + q] = 0;
+        for (let r = c + 1; r < s; r += 1) {
+          piv[p0 + r] = r;
+          piv[p0 + s + r] = r;
+        }
+        return;
+      }
+      for (let r = c + 1; r < s; r += 1) {
+        const f = A[d0 + r * s + c] / pv;
+        A[d0 + r * s + c] = f;
+        if (f === 0) continue;
+        for (let q = c + 1; q < s; q += 1) A[d0 + r * s + q] -= f * A[d0 + c * s + q];
+      }
+    }
+  }
+
+  /** x ← D⁻¹ x for the LU at d0 (x at v[v0 .. v0 + s)); dropped unknowns get 0. */
+  private luSolve(d0: number, s: number, p0: number, v: Float64Array, v0: number): void {
+    const A = this.mat;
+    const piv = this.piv;
+    // Row swaps.
+    for (let c = 0; c < s; c += 1) {
+      const r = piv[p0 + c];
+      if (r !== c) {
+        const t = v[v0 + c];
+        v[v0 + c] = v[v0 + r];
+        v[v0 + r] = t;
+      }
+    }
+    // L y = b (unit lower).
+    for (let r = 1; r < s; r += 1) {
+      let sum = v[v0 + r];
+      for (let q = 0; q < r; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
+      v[v0 + r] = sum;
+    }
+    // U x = y.
+    for (let r = s - 1; r >= 0; r -= 1) {
+      const d = A[d0 + r * s + r];
+      if (d === 0) {
+        v[v0 + r] = 0;
+        continue;
+      }
+      let sum = v[v0 + r];
+      for (let q = r + 1; q < s; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
+      v[v0 + r] = sum / d;
+    }
+    // Column swaps, undone in reverse.
+    for (let c = s - 1; c >= 0; c -= 1) {
+      const q = piv[p0 + s + c];
+      if (q !== c) {
+        const t = v[v0 + c];
+        v[v0 + c] = v[v0 + q];
+        v[v0 + q] = t;
+      }
+    }
+  }
+}

@@ -1,0 +1,184 @@
+/**
+ * Helpers for the joint tests (tests/joints-*.test.ts): world points of anchors, the error of a
+ * point joint measured from the bodies' poses (not from the joint's own bookkeeping), the seed's
+ * chain of 10 links, hinge angles and locked-plane errors from the relative rotor, and snapshots
+ * of the whole body state (for "nothing changed" checks).
+ *
+ * Conventions: axis 1 ("y") is up, gravity −9.81 e_1; worlds from `makeWorld` (sleep off).
+ */
+import { rotorApplyVector, rotorFromPlane, rotorMul, rotorReverse } from '@physin/algebra';
+import { Body, HyperSphere, PointJoint } from '@physin/engine';
+import type { Dims, Params, World } from '@physin/engine';
+import { makeWorld } from './scenes.js';
+
+/** The world position of the body point `local` (body frame): x + R local R~. */
+export function worldPoint(body: Body, local: ArrayLike<number>): Float64Array {
+  const out = rotorApplyVector(body.D, new Float64Array(body.D.n), body.R, local);
+  for (let i = 0; i < out.length; i += 1) out[i] = out[i]! + body.x[i]!;
+  return out;
+}
+
+/** |p_B − p_A| for the anchors of a point joint; `b` null means `localB` is a world point. */
+export function pointJointError(a: Body, localA: ArrayLike<number>, b: Body | null, localB: ArrayLike<number>): number {
+  const pa = worldPoint(a, localA);
+  const pb = b === null ? Float64Array.from(localB) : worldPoint(b, localB);
+  let s = 0;
+  for (let i = 0; i < pa.length; i += 1) s += (pb[i]! - pa[i]!) ** 2;
+  return Math.sqrt(s);
+}
+
+/** The relative rotor Q = R_A~ R_B (B seen from A); a null A is the world (identity). */
+export function relativeRotor(D: Dims, a: Body | null, b: Body): Float64Array {
+  if (a === null) return Float64Array.from(b.R);
+  const rev = rotorReverse(D, new Float64Array(D.r), a.R);
+  return rotorMul(D, new Float64Array(D.r), rev, b.R);
+}
+
+/** Index (lexicographic) of the plane (i, j), i < j. */
+export function planeIndexOf(n: number, i: number, j: number): number {
+  return i * n - (i * (i + 1)) / 2 + (j - i - 1);
+}
+
+/** The pair (i, j) of plane index p in n dimensions. */
+export function planePair(n: number, p: number): [number, number] {
+  let q = 0;
+  for (let i = 0; i < n; i += 1) for (let j = i + 1; j < n; j += 1) {
+    if (q === p) return [i, j];
+    q += 1;
+  }
+  throw new RangeError(`no plane ${p} in ${n} dimensions`);
+}
+
+/**
+ * The hinge angle of Q in the free plane p = (i, j): θ = 2 atan2(−⟨Q⟩_F, ⟨Q⟩_0) (the brief's §8;
+ * positive θ turns e_i toward e_j), in (−π, π].
+ */
+export function freePlaneAngle(Q: ArrayLike<number>, p: number): number {
+  return 2 * Math.atan2(-Q[1 + p]!, Q[0]!);
+}
+
+/**
+ * The locked-plane errors of Q for the free plane p: the free turn is undone,
+ * Q' = Q · exp(+θ/2 F), and each plane q ≠ p reports 2|⟨Q'⟩_q| (≈ the angle in that plane, rad).
+ * Returns the largest of them, and the largest grade-4 part (4D: e0123) times 2.
+ */
+export function lockedPlaneError(D: Dims, Q: ArrayLike<number>, p: number): number {
+  const [i, j] = planePair(D.n, p);
+  const theta = freePlaneAngle(Q, p);
+  const undo = rotorFromPlane(D, new Float64Array(D.r), i, j, -theta);
+  const Qp = rotorMul(D, new Float64Array(D.r), Q, undo);
+  let worst = 0;
+  for (let q = 0; q < D.k; q += 1) if (q !== p) worst = Math.max(worst, 2 * Math.abs(Qp[1 + q]!));
+  for (let a = 1 + D.k; a < D.r; a += 1) worst = Math.max(worst, 2 * Math.abs(Qp[a]!));
+  return worst;
+}
+
+/** θ_prev + wrap(θ_new − θ_prev): an angle tracked across turns. */
+export function unwrap(prev: number, next: number): number {
+  const d = next - prev;
+  return prev + d - 2 * Math.PI * Math.round(d / (2 * Math.PI));
+}
+
+/** Every body's x, R, v, L, w, in world order, in one array (for bit-exact comparisons). */
+export function snapshot(world: World): number[] {
+  const out: number[] = [];
+  for (const b of world.bodies) out.push(...b.x, ...b.R, ...b.v, ...b.L, ...b.w);
+  return out;
+}
+
+/** One link of the seed's chain: 1 m between its anchors (local ±0.5 e_0), 1 kg. */
+export const LINK_HALF_LENGTH = 0.5;
+/** The radius of a link (a ball). */
+export const LINK_RADIUS = 0.1;
+
+export interface Chain {
+  world: World;
+  links: Body[];
+  joints: PointJoint[];
+  /** Largest anchor separation of the joints now (m). */
+  error(): number;
+}
+
+export interface ChainOptions {
+  /** Dimensions (default 3). */
+  n?: number;
+  /** true: the chain hangs straight down from the pivot; false: it starts horizontal along +x. */
+  hanging: boolean;
+  /** World parameters (merged over sleep off). */
+  params?: Partial<Params>;
+  /** Mass of the last link (default 1 kg: the seed's chain). */
+  lastMass?: number;
+  /** Number of links (default 10). */
+  count?: number;
+}
+
+/**
+ * The seed's chain: `count` links of 1 kg, 1 m apart, the first link joined to the world at the
+ * origin. A link is a ball of radius 0.1 with its two anchors at local ±0.5 e_0 (the midpoints
+ * between neighbouring centres); joints are point joints between the end of one link and the start
+ * of the next. Horizontal: link i centred at ((i + 0.5), 0, …); hanging: centred at
+ * (0, −(i + 0.5), 0, …), turned by −π/2 in the (x y) plane so that its local +x points down.
+ * With these links Rapier 0.21 and cannon-es 0.20 reproduce the issue's whipping-chain errors
+ * (0.23 and 0.40: bench/joints.bench.mjs), so this is the scene those figures, and the seed's, are
+ * most likely about.
+ */
+export function buildChain(options: ChainOptions): Chain {
+  const n = options.n ?? 3;
+  const count = options.count ?? 10;
+  const world = makeWorld(n, options.params ?? {});
+  const D = world.D;
+  const shape = HyperSphere(LINK_RADIUS);
+  const start = new Array<number>(n).fill(0);
+  start[0] = -LINK_HALF_LENGTH;
+  const end = new Array<number>(n).fill(0);
+  end[0] = LINK_HALF_LENGTH;
+  const rotor = options.hanging ? rotorFromPlane(D, new Float64Array(D.r), 0, 1, -Math.PI / 2) : undefined;
+  const links: Body[] = [];
+  for (let i = 0; i < count; i += 1) {
+    const position = new Array<number>(n).fill(0);
+    if (options.hanging) position[1] = -(i + 0.5);
+    else position[0] = i + 0.5;
+    const mass = i === count - 1 ? (options.lastMass ?? 1) : 1;
+    links.push(world.addBody(new Body(D, { shape, mass, position, ...(rotor ? { rotor } : {}), name: `link${i}` })));
+  }
+  const joints: PointJoint[] = [];
+  const pivot = new Array<number>(n).fill(0);
+  joints.push(new PointJoint(links[0]!, null, start, pivot));
+  for (let i = 1; i < count; i += 1) joints.push(new PointJoint(links[i - 1]!, links[i]!, end, start));
+  for (const j of joints) world.addConstraint(j);
+  const error = (): number => {
+    let worst = pointJointError(links[0]!, start, null, pivot);
+    for (let i = 1; i < count; i += 1) worst = Math.max(worst, pointJointError(links[i - 1]!, end, links[i]!, start));
+    return worst;
+  };
+  return { world, links, joints, error };
+}
+
+/** Total energy of the chain: Σ kinetic + m g y (J; gravity 9.81 along −e_1). */
+export function chainEnergy(chain: Chain): number {
+  let e = 0;
+  for (const b of chain.links) e += b.kineticEnergy() + b.mass * 9.81 * b.x[1]!;
+  return e;
+}
+
+/**
+ * Runs a chain for `steps` steps of dt and returns the worst joint error over every step end, and
+ * the largest rise of the total energy above its start (J; > 0 means the solver put energy in).
+ */
+export function runChain(chain: Chain, steps: number, dt: number): { worst: number; energyRise: number; energyChange: number } {
+  let worst = 0;
+  const e0 = chainEnergy(chain);
+  let eMax = e0;
+  for (let s = 0; s < steps; s += 1) {
+    chain.world.step(dt);
+    worst = Math.max(worst, chain.error());
+    eMax = Math.max(eMax, chainEnergy(chain));
+    if (!Number.isFinite(worst)) return { worst: Infinity, energyRise: Infinity, energyChange: NaN };
+  }
+  return { worst, energyRise: eMax - e0, energyChange: chainEnergy(chain) - e0 };
+}
+
+/** Runs a chain for `steps` steps of dt and returns the worst joint error over every step end. */
+export function worstChainError(chain: Chain, steps: number, dt: number): number {
+  return runChain(chain, steps, dt).worst;
+}

@@ -711,6 +711,8 @@ export class JointSolver {
         this.joints[j].buildRows(this, j);
       }
       this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+      // The tree is factored again at the current poses (with the Jacobians of the start of
+      // the sub-step, a whipping chain's projection diverges).
       if (this.tree.build(this, sb) > 0) {
         this.tree.factor(this, sb);
         this.tree.solvePositions(this, sb);

@@ -17,22 +17,14 @@
  * the engine is newer than it.
  */
 import { execFileSync } from 'node:child_process';
-import { existsSync, readdirSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { ensureBuiltEngine } from './support/built-engine.js';
 import { beforeAll, describe, expect, it } from 'vitest';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 const dist = join(root, 'packages/engine/dist');
 
-function newest(dir: string): number {
-  let t = 0;
-  for (const entry of readdirSync(dir, { withFileTypes: true })) {
-    const p = join(dir, entry.name);
-    t = Math.max(t, entry.isDirectory() ? newest(p) : statSync(p).mtimeMs);
-  }
-  return t;
-}
 
 // The child: builds the pairs, warms up, measures. Prints one JSON line.
 const SCRIPT = String.raw`
@@ -171,10 +163,7 @@ interface Window {
 let result: { calls: number; hits: number; windows: Window[] } | undefined;
 
 beforeAll(() => {
-  const sources = Math.max(newest(join(root, 'packages/algebra/src')), newest(join(root, 'packages/engine/src')));
-  if (!existsSync(join(dist, 'index.js')) || statSync(join(dist, 'index.js')).mtimeMs < sources) {
-    execFileSync('npx', ['--yes', 'pnpm@12.21.0', '-r', '--filter', './packages/**', 'run', 'build'], { cwd: root, stdio: 'pipe' });
-  }
+  ensureBuiltEngine();
   const out = execFileSync(
     process.execPath,
     ['--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', '--input-type=module', '-e', SCRIPT, pathToFileURL(dist).href],

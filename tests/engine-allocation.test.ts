@@ -23,22 +23,13 @@
  * the engine is newer than it.
  */
 import { execFileSync } from 'node:child_process';
-import { existsSync, readdirSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { ensureBuiltEngine } from './support/built-engine.js';
 import { beforeAll, describe, expect, it } from 'vitest';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
-const built = join(root, 'packages/engine/dist/index.js');
 
-function newest(dir: string): number {
-  let t = 0;
-  for (const entry of readdirSync(dir, { withFileTypes: true })) {
-    const p = join(dir, entry.name);
-    t = Math.max(t, entry.isDirectory() ? newest(p) : statSync(p).mtimeMs);
-  }
-  return t;
-}
 
 interface Window {
   bytes: number;
@@ -59,10 +50,7 @@ interface Measure {
 let results: Record<string, Measure> = {};
 
 beforeAll(() => {
-  const sources = Math.max(newest(join(root, 'packages/algebra/src')), newest(join(root, 'packages/engine/src')));
-  if (!existsSync(built) || statSync(built).mtimeMs < sources) {
-    execFileSync('npx', ['--yes', 'pnpm@12.21.0', '-r', '--filter', './packages/**', 'run', 'build'], { cwd: root, stdio: 'pipe' });
-  }
+  ensureBuiltEngine();
   const out = execFileSync(
     process.execPath,
     ['--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/engine-allocation.mjs'), '10000'],

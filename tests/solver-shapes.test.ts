@@ -16,6 +16,7 @@ import { describe, expect, it } from 'vitest';
 import { Body, ConvexMesh, dims, HalfSpace, HyperBox, HyperSphere, HyperTorus, World } from '@physin/engine';
 import type { Shape } from '@physin/engine';
 import { randomArray, seeded, uniform } from './support/random.js';
+import { cubeBoundary } from './support/meshes.js';
 
 const G = 9.81;
 const SLOP = 0.005; // defaultParams.penetrationSlop
@@ -83,37 +84,7 @@ function crossPolytope(n: number, s: number, Q?: Float64Array): { vertices: numb
   return { vertices, facets };
 }
 
-function permutations(items: number[]): number[][] {
-  if (items.length <= 1) return [items.slice()];
-  const out: number[][] = [];
-  items.forEach((x, i) => {
-    for (const rest of permutations([...items.slice(0, i), ...items.slice(i + 1)])) out.push([x, ...rest]);
-  });
-  return out;
-}
 
-/** The boundary of the box diag(a)·[−1, 1]ⁿ, each facet split into (n−1)! simplices (Kuhn triangulation). */
-function boxMesh(a: number[]): { vertices: number[][]; facets: number[][] } {
-  const n = a.length;
-  const vertices: number[][] = [];
-  for (let mask = 0; mask < 1 << n; mask += 1) vertices.push(a.map((x, c) => (mask & (1 << c) ? x : -x)));
-  const facets: number[][] = [];
-  for (let d = 0; d < n; d += 1) {
-    const others = [...Array(n).keys()].filter((c) => c !== d);
-    for (const side of [0, 1]) {
-      for (const order of permutations(others)) {
-        let mask = side << d;
-        const f = [mask];
-        for (const c of order) {
-          mask |= 1 << c;
-          f.push(mask);
-        }
-        facets.push(f);
-      }
-    }
-  }
-  return { vertices, facets };
-}
 
 /**
  * A rotation (det +1) that takes the unit vector u to −e_1 (down): the Householder reflection
@@ -297,7 +268,7 @@ describe('convex mesh on the ground and against a ball (seed plan 10)', () => {
     it(`n = ${n}: a box given as a mesh (Kuhn-triangulated facets) rests at its half height, like the HyperBox (penetrationSlop + 1e-3); no creep (1e-6)`, () => {
       const D = dims(n);
       const a = [0.4, 0.3, 0.5, 0.35].slice(0, n);
-      const mesh = boxMesh(a);
+      const mesh = cubeBoundary(a.length, a);
       const shape = ConvexMesh(D, mesh.vertices, mesh.facets);
       const world = groundWorld(n);
       const asMesh = world.addBody(new Body(D, { shape, mass: 1, position: at(n, { 1: 0.4 }), material: { friction: 0.6, restitution: 0 } }));

@@ -52,6 +52,13 @@ export class ContactSolver {
   /** Numbers per row: dir (n), J_A, J_B, I_A⁻¹J_A, I_B⁻¹J_B (k each), mass, K_A, K_B. */
   private readonly RS: number;
 
+  /**
+   * Whether n = 3 and n = 4 use the written-out copies of the manifold solve (default true).
+   * They are bit-identical to the general loop; tests switch them off to show it.
+   * @internal
+   */
+  writtenOut = true;
+
   /** Manifolds of this sub-step. */
   private mfCount = 0;
   private mfContact = new Int32Array(16);
@@ -348,7 +355,8 @@ export class ContactSolver {
     for (let o = 0; o < this.mfCount; o += 1) {
       const mf = shock ? this.shockOrder[o] : o;
       for (let sweep = 0; sweep < inner; sweep += 1) {
-        if (this.n === 3) this.solveManifold3(sb, mf, shock);
+        if (this.writtenOut && this.n === 3) this.solveManifold3(sb, mf, shock);
+        else if (this.writtenOut && this.n === 4) this.solveManifold4(sb, mf, shock);
         else this.solveManifold(sb, mf, shock, 1);
       }
     }
@@ -580,6 +588,197 @@ export class ContactSolver {
     V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz;
     W[vb] = wb0; W[vb + 1] = wb1; W[vb + 2] = wb2;
   }
+
+  /**
+   * {@link ContactSolver.solveManifold} for n = 4, written out (k = 6, three friction rows, row
+   * stride 31): the same arithmetic in the same order, so results are bit-identical to the
+   * general loop; the velocities of the two bodies stay in locals for the whole manifold.
+   * (Generated from the general loop; keep the two in step.)
+   */
+  private solveManifold4(sb: SolverBodies, mf: number, shock: boolean): void {
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    const a = this.mfA[mf];
+    const b = this.mfB[mf];
+    let fa = 1;
+    let fb = 1;
+    if (shock) {
+      const da = sb.depth[a];
+      const db = sb.depth[b];
+      if (da < db) fa = 0;
+      else if (db < da) fb = 0;
+    }
+    const ima = fa * sb.invMass[a];
+    const imb = fb * sb.invMass[b];
+    const va = a * 4;
+    const vb = b * 4;
+    const wa = a * 6;
+    const wb = b * 6;
+    let vax = V[va], vay = V[va + 1], vaz = V[va + 2], vaw = V[va + 3];
+    let vbx = V[vb], vby = V[vb + 1], vbz = V[vb + 2], vbw = V[vb + 3];
+    let wa0 = W[wa], wa1 = W[wa + 1], wa2 = W[wa + 2], wa3 = W[wa + 3], wa4 = W[wa + 4], wa5 = W[wa + 5];
+    let wb0 = W[wb], wb1 = W[wb + 1], wb2 = W[wb + 2], wb3 = W[wb + 3], wb4 = W[wb + 4], wb5 = W[wb + 5];
+    const mu = this.mfFriction[mf];
+    const first = this.mfFirst[mf];
+    const last = first + this.mfPoints[mf];
+    const lambdaT = this.lambdaT;
+    const lambdaN = this.lambdaN;
+    if (mu > 0) {
+      for (let cp = first; cp < last; cp += 1) {
+        const maxT = mu * lambdaN[cp];
+        const r1 = cp * 124 + 31;
+        const r2 = r1 + 31;
+        const r3 = r2 + 31;
+        const v1 =
+          rows[r1] * (vbx - vax) +
+          rows[r1 + 1] * (vby - vay) +
+          rows[r1 + 2] * (vbz - vaz) +
+          rows[r1 + 3] * (vbw - vaw) +
+          (rows[r1 + 10] * wb0 - rows[r1 + 4] * wa0) +
+          (rows[r1 + 11] * wb1 - rows[r1 + 5] * wa1) +
+          (rows[r1 + 12] * wb2 - rows[r1 + 6] * wa2) +
+          (rows[r1 + 13] * wb3 - rows[r1 + 7] * wa3) +
+          (rows[r1 + 14] * wb4 - rows[r1 + 8] * wa4) +
+          (rows[r1 + 15] * wb5 - rows[r1 + 9] * wa5);
+        const v2 =
+          rows[r2] * (vbx - vax) +
+          rows[r2 + 1] * (vby - vay) +
+          rows[r2 + 2] * (vbz - vaz) +
+          rows[r2 + 3] * (vbw - vaw) +
+          (rows[r2 + 10] * wb0 - rows[r2 + 4] * wa0) +
+          (rows[r2 + 11] * wb1 - rows[r2 + 5] * wa1) +
+          (rows[r2 + 12] * wb2 - rows[r2 + 6] * wa2) +
+          (rows[r2 + 13] * wb3 - rows[r2 + 7] * wa3) +
+          (rows[r2 + 14] * wb4 - rows[r2 + 8] * wa4) +
+          (rows[r2 + 15] * wb5 - rows[r2 + 9] * wa5);
+        const v3 =
+          rows[r3] * (vbx - vax) +
+          rows[r3 + 1] * (vby - vay) +
+          rows[r3 + 2] * (vbz - vaz) +
+          rows[r3 + 3] * (vbw - vaw) +
+          (rows[r3 + 10] * wb0 - rows[r3 + 4] * wa0) +
+          (rows[r3 + 11] * wb1 - rows[r3 + 5] * wa1) +
+          (rows[r3 + 12] * wb2 - rows[r3 + 6] * wa2) +
+          (rows[r3 + 13] * wb3 - rows[r3 + 7] * wa3) +
+          (rows[r3 + 14] * wb4 - rows[r3 + 8] * wa4) +
+          (rows[r3 + 15] * wb5 - rows[r3 + 9] * wa5);
+        const K1 = fa * rows[r1 + 29] + fb * rows[r1 + 30];
+        const K2 = fa * rows[r2 + 29] + fb * rows[r2 + 30];
+        const K3 = fa * rows[r3 + 29] + fb * rows[r3 + 30];
+        const o1 = lambdaT[cp * 3];
+        const o2 = lambdaT[cp * 3 + 1];
+        const o3 = lambdaT[cp * 3 + 2];
+        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
+        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
+        let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
+        const norm2 = n1 * n1 + n2 * n2 + n3 * n3;
+        if (norm2 > maxT * maxT) {
+          const scale = maxT / Math.sqrt(norm2);
+          n1 *= scale;
+          n2 *= scale;
+          n3 *= scale;
+        }
+        lambdaT[cp * 3] = n1;
+        lambdaT[cp * 3 + 1] = n2;
+        lambdaT[cp * 3 + 2] = n3;
+        const d1 = n1 - o1;
+        const d2 = n2 - o2;
+        const d3 = n3 - o3;
+        // Applied one row after the other, as the general loop does.
+        if (d1 !== 0) {
+          const la = ima * d1;
+          const lb = imb * d1;
+          vax -= la * rows[r1]; vbx += lb * rows[r1];
+          vay -= la * rows[r1 + 1]; vby += lb * rows[r1 + 1];
+          vaz -= la * rows[r1 + 2]; vbz += lb * rows[r1 + 2];
+          vaw -= la * rows[r1 + 3]; vbw += lb * rows[r1 + 3];
+          const ga = fa * d1;
+          const gb = fb * d1;
+          wa0 -= ga * rows[r1 + 16]; wb0 += gb * rows[r1 + 22];
+          wa1 -= ga * rows[r1 + 17]; wb1 += gb * rows[r1 + 23];
+          wa2 -= ga * rows[r1 + 18]; wb2 += gb * rows[r1 + 24];
+          wa3 -= ga * rows[r1 + 19]; wb3 += gb * rows[r1 + 25];
+          wa4 -= ga * rows[r1 + 20]; wb4 += gb * rows[r1 + 26];
+          wa5 -= ga * rows[r1 + 21]; wb5 += gb * rows[r1 + 27];
+        }
+        if (d2 !== 0) {
+          const la = ima * d2;
+          const lb = imb * d2;
+          vax -= la * rows[r2]; vbx += lb * rows[r2];
+          vay -= la * rows[r2 + 1]; vby += lb * rows[r2 + 1];
+          vaz -= la * rows[r2 + 2]; vbz += lb * rows[r2 + 2];
+          vaw -= la * rows[r2 + 3]; vbw += lb * rows[r2 + 3];
+          const ga = fa * d2;
+          const gb = fb * d2;
+          wa0 -= ga * rows[r2 + 16]; wb0 += gb * rows[r2 + 22];
+          wa1 -= ga * rows[r2 + 17]; wb1 += gb * rows[r2 + 23];
+          wa2 -= ga * rows[r2 + 18]; wb2 += gb * rows[r2 + 24];
+          wa3 -= ga * rows[r2 + 19]; wb3 += gb * rows[r2 + 25];
+          wa4 -= ga * rows[r2 + 20]; wb4 += gb * rows[r2 + 26];
+          wa5 -= ga * rows[r2 + 21]; wb5 += gb * rows[r2 + 27];
+        }
+        if (d3 !== 0) {
+          const la = ima * d3;
+          const lb = imb * d3;
+          vax -= la * rows[r3]; vbx += lb * rows[r3];
+          vay -= la * rows[r3 + 1]; vby += lb * rows[r3 + 1];
+          vaz -= la * rows[r3 + 2]; vbz += lb * rows[r3 + 2];
+          vaw -= la * rows[r3 + 3]; vbw += lb * rows[r3 + 3];
+          const ga = fa * d3;
+          const gb = fb * d3;
+          wa0 -= ga * rows[r3 + 16]; wb0 += gb * rows[r3 + 22];
+          wa1 -= ga * rows[r3 + 17]; wb1 += gb * rows[r3 + 23];
+          wa2 -= ga * rows[r3 + 18]; wb2 += gb * rows[r3 + 24];
+          wa3 -= ga * rows[r3 + 19]; wb3 += gb * rows[r3 + 25];
+          wa4 -= ga * rows[r3 + 20]; wb4 += gb * rows[r3 + 26];
+          wa5 -= ga * rows[r3 + 21]; wb5 += gb * rows[r3 + 27];
+        }
+      }
+    }
+    for (let cp = first; cp < last; cp += 1) {
+      const rb = cp * 124;
+      const K = fa * rows[rb + 29] + fb * rows[rb + 30];
+      if (!(K > 0)) continue;
+      const vn =
+        rows[rb] * (vbx - vax) +
+        rows[rb + 1] * (vby - vay) +
+        rows[rb + 2] * (vbz - vaz) +
+        rows[rb + 3] * (vbw - vaw) +
+        (rows[rb + 10] * wb0 - rows[rb + 4] * wa0) +
+        (rows[rb + 11] * wb1 - rows[rb + 5] * wa1) +
+        (rows[rb + 12] * wb2 - rows[rb + 6] * wa2) +
+        (rows[rb + 13] * wb3 - rows[rb + 7] * wa3) +
+        (rows[rb + 14] * wb4 - rows[rb + 8] * wa4) +
+        (rows[rb + 15] * wb5 - rows[rb + 9] * wa5);
+      const old = lambdaN[cp];
+      const nl = Math.max(0, old + (this.target[cp] - vn) / K);
+      lambdaN[cp] = nl;
+      if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
+      const dl = nl - old;
+      if (dl === 0) continue;
+      const la = ima * dl;
+      const lb = imb * dl;
+      vax -= la * rows[rb]; vbx += lb * rows[rb];
+      vay -= la * rows[rb + 1]; vby += lb * rows[rb + 1];
+      vaz -= la * rows[rb + 2]; vbz += lb * rows[rb + 2];
+      vaw -= la * rows[rb + 3]; vbw += lb * rows[rb + 3];
+      const ga = fa * dl;
+      const gb = fb * dl;
+      wa0 -= ga * rows[rb + 16]; wb0 += gb * rows[rb + 22];
+      wa1 -= ga * rows[rb + 17]; wb1 += gb * rows[rb + 23];
+      wa2 -= ga * rows[rb + 18]; wb2 += gb * rows[rb + 24];
+      wa3 -= ga * rows[rb + 19]; wb3 += gb * rows[rb + 25];
+      wa4 -= ga * rows[rb + 20]; wb4 += gb * rows[rb + 26];
+      wa5 -= ga * rows[rb + 21]; wb5 += gb * rows[rb + 27];
+    }
+    // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
+    V[va] = vax; V[va + 1] = vay; V[va + 2] = vaz; V[va + 3] = vaw;
+    W[wa] = wa0; W[wa + 1] = wa1; W[wa + 2] = wa2; W[wa + 3] = wa3; W[wa + 4] = wa4; W[wa + 5] = wa5;
+    V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz; V[vb + 3] = vbw;
+    W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2; W[wb + 3] = wb3; W[wb + 4] = wb4; W[wb + 5] = wb5;
+  }
+
 
   /** `iterations` Gauss–Seidel passes over every manifold. */
   solve(sb: SolverBodies, iterations: number): void {

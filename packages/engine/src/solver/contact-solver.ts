@@ -53,7 +53,8 @@ export class ContactSolver {
   private readonly RS: number;
 
   /**
-   * Whether n = 3 and n = 4 use the written-out copies of the manifold solve (default true).
+   * Whether n = 3 and n = 4 use the written-out copies of the row set-up in `prepare` and of the
+   * manifold solve (default true).
    * They are bit-identical to the general loop; tests switch them off to show it.
    * @internal
    */
@@ -152,6 +153,8 @@ export class ContactSolver {
     const tangents = this.tangents;
     const rA = this.rA;
     const rB = this.rB;
+    // The written-out rows of n = 3 and n = 4 (see writtenOut).
+    const fast = this.writtenOut ? n : 0;
     this.mfCount = 0;
     this.cpCount = 0;
     for (let i = 0; i < contacts.count; i += 1) {
@@ -215,34 +218,151 @@ export class ContactSolver {
           const dir = r === 0 ? N : tangents;
           const off = r === 0 ? 0 : (r - 1) * n;
           for (let d = 0; d < n; d += 1) rows[base + d] = dir[off + d];
-          // J = r ∧ dir
-          for (let pl = 0; pl < k; pl += 1) {
-            const pi = planeI[pl];
-            const pj = planeJ[pl];
-            const di = rows[base + pi];
-            const dj = rows[base + pj];
-            rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
-            rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
-          }
-          // I⁻¹J and K = 1/m + J·I⁻¹J per body
-          let KA = imA;
-          let KB = imB;
-          for (let row = 0; row < k; row += 1) {
-            let sa = 0;
-            let sbv = 0;
-            for (let col = 0; col < k; col += 1) {
-              sa += IW[IA + row * k + col] * rows[base + n + col];
-              sbv += IW[IB + row * k + col] * rows[base + n + k + col];
+          if (fast === 3) {
+            // n = 3 written out (the same sums in the same order as the general loop below).
+            const d0 = rows[base];
+            const d1 = rows[base + 1];
+            const d2 = rows[base + 2];
+            const ja0 = rA[0] * d1 - rA[1] * d0;
+            const jb0 = rB[0] * d1 - rB[1] * d0;
+            rows[base + 3] = ja0;
+            rows[base + 6] = jb0;
+            const ja1 = rA[0] * d2 - rA[2] * d0;
+            const jb1 = rB[0] * d2 - rB[2] * d0;
+            rows[base + 4] = ja1;
+            rows[base + 7] = jb1;
+            const ja2 = rA[1] * d2 - rA[2] * d1;
+            const jb2 = rB[1] * d2 - rB[2] * d1;
+            rows[base + 5] = ja2;
+            rows[base + 8] = jb2;
+            let KA = imA;
+            let KB = imB;
+            const sa0 = 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
+            const sb0 = 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
+            rows[base + 9] = sa0;
+            rows[base + 12] = sb0;
+            KA += sa0 * ja0;
+            KB += sb0 * jb0;
+            const sa1 = 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
+            const sb1 = 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
+            rows[base + 10] = sa1;
+            rows[base + 13] = sb1;
+            KA += sa1 * ja1;
+            KB += sb1 * jb1;
+            const sa2 = 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
+            const sb2 = 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
+            rows[base + 11] = sa2;
+            rows[base + 14] = sb2;
+            KA += sa2 * ja2;
+            KB += sb2 * jb2;
+            const K = KA + KB;
+            rows[base + 15] = K > 0 ? 1 / K : 0;
+            rows[base + 16] = KA;
+            rows[base + 17] = KB;
+
+          } else if (fast === 4) {
+            // n = 4 written out (the same sums in the same order as the general loop below).
+            const d0 = rows[base];
+            const d1 = rows[base + 1];
+            const d2 = rows[base + 2];
+            const d3 = rows[base + 3];
+            const ja0 = rA[0] * d1 - rA[1] * d0;
+            const jb0 = rB[0] * d1 - rB[1] * d0;
+            rows[base + 4] = ja0;
+            rows[base + 10] = jb0;
+            const ja1 = rA[0] * d2 - rA[2] * d0;
+            const jb1 = rB[0] * d2 - rB[2] * d0;
+            rows[base + 5] = ja1;
+            rows[base + 11] = jb1;
+            const ja2 = rA[0] * d3 - rA[3] * d0;
+            const jb2 = rB[0] * d3 - rB[3] * d0;
+            rows[base + 6] = ja2;
+            rows[base + 12] = jb2;
+            const ja3 = rA[1] * d2 - rA[2] * d1;
+            const jb3 = rB[1] * d2 - rB[2] * d1;
+            rows[base + 7] = ja3;
+            rows[base + 13] = jb3;
+            const ja4 = rA[1] * d3 - rA[3] * d1;
+            const jb4 = rB[1] * d3 - rB[3] * d1;
+            rows[base + 8] = ja4;
+            rows[base + 14] = jb4;
+            const ja5 = rA[2] * d3 - rA[3] * d2;
+            const jb5 = rB[2] * d3 - rB[3] * d2;
+            rows[base + 9] = ja5;
+            rows[base + 15] = jb5;
+            let KA = imA;
+            let KB = imB;
+            const sa0 = 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
+            const sb0 = 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
+            rows[base + 16] = sa0;
+            rows[base + 22] = sb0;
+            KA += sa0 * ja0;
+            KB += sb0 * jb0;
+            const sa1 = 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
+            const sb1 = 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
+            rows[base + 17] = sa1;
+            rows[base + 23] = sb1;
+            KA += sa1 * ja1;
+            KB += sb1 * jb1;
+            const sa2 = 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
+            const sb2 = 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
+            rows[base + 18] = sa2;
+            rows[base + 24] = sb2;
+            KA += sa2 * ja2;
+            KB += sb2 * jb2;
+            const sa3 = 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
+            const sb3 = 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
+            rows[base + 19] = sa3;
+            rows[base + 25] = sb3;
+            KA += sa3 * ja3;
+            KB += sb3 * jb3;
+            const sa4 = 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
+            const sb4 = 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
+            rows[base + 20] = sa4;
+            rows[base + 26] = sb4;
+            KA += sa4 * ja4;
+            KB += sb4 * jb4;
+            const sa5 = 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
+            const sb5 = 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
+            rows[base + 21] = sa5;
+            rows[base + 27] = sb5;
+            KA += sa5 * ja5;
+            KB += sb5 * jb5;
+            const K = KA + KB;
+            rows[base + 28] = K > 0 ? 1 / K : 0;
+            rows[base + 29] = KA;
+            rows[base + 30] = KB;
+
+          } else {
+            // J = r ∧ dir
+            for (let pl = 0; pl < k; pl += 1) {
+              const pi = planeI[pl];
+              const pj = planeJ[pl];
+              const di = rows[base + pi];
+              const dj = rows[base + pj];
+              rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
+              rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
             }
-            rows[base + n + 2 * k + row] = sa;
-            rows[base + n + 3 * k + row] = sbv;
-            KA += sa * rows[base + n + row];
-            KB += sbv * rows[base + n + k + row];
+            // I⁻¹J and K = 1/m + J·I⁻¹J per body
+            let KA = imA;
+            let KB = imB;
+            for (let row = 0; row < k; row += 1) {
+              let sa = 0;
+              let sbv = 0;
+              for (let col = 0; col < k; col += 1) {
+                sa += IW[IA + row * k + col] * rows[base + n + col];
+                sbv += IW[IB + row * k + col] * rows[base + n + k + col];
+              }
+              rows[base + n + 2 * k + row] = sa;
+              rows[base + n + 3 * k + row] = sbv;
+              KA += sa * rows[base + n + row];
+              KB += sbv * rows[base + n + k + row];
+            }
+            const K = KA + KB;
+            rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
+            rows[base + n + 4 * k + 1] = KA;
+            rows[base + n + 4 * k + 2] = KB;
           }
-          const K = KA + KB;
-          rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
-          rows[base + n + 4 * k + 1] = KA;
-          rows[base + n + 4 * k + 2] = KB;
         }
         // Normal velocity before the solve, and the velocity target of the point.
         const base = cp * (m + 1) * RS;

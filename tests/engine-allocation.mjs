@@ -1,5 +1,6 @@
 // Measures what World.step allocates in steady state. Run by tests/engine-allocation.test.ts as
-//   node --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 tests/engine-allocation.mjs STEPS SCENE
+//   node --no-concurrent-recompilation --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 \
+//     tests/engine-allocation.mjs STEPS SCENE
 // with SCENE one of 3, 4 (100 free bodies), stack3, stack4 (resting contacts), joints3, joints4.
 // It imports the BUILT engine (dist/), as an application would, and prints one JSON line.
 //
@@ -14,6 +15,9 @@
 // allocated during the window (by the steps, by the measuring — about 12 KB of new space — and by
 // the JIT, see WINDOWS below). The big semi-space makes a scavenge during the window unlikely
 // unless the step really allocates.
+//
+// --no-concurrent-recompilation makes the JIT's timeline the same on an idle and a busy machine
+// (the compiler runs at once on the main thread instead of racing it); see the test's head.
 //
 // Settling: on a busy machine (CI runs test files in parallel) the optimising compiler runs late,
 // and until its code is installed the step runs in the interpreter, which boxes every double it

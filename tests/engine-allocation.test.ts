@@ -1,8 +1,9 @@
 /**
  * World.step allocates nothing in steady state.
  *
- * Method (no vitest flags needed): a child `node --expose-gc --max-semi-space-size=256
- * --min-semi-space-size=64 tests/engine-allocation.mjs 10000 SCENE` per scene imports the BUILT
+ * Method (no vitest flags needed): a child `node --no-concurrent-recompilation --expose-gc
+ * --max-semi-space-size=256 --min-semi-space-size=64 tests/engine-allocation.mjs 10000 SCENE` per
+ * scene imports the BUILT
  * engine, builds the scene's world — for SCENE 3 and 4 a 100-body world (boxes and balls; dynamic,
  * kinematic and static; spinning and moving; under gravity) — warms it up until the step is
  * optimised (waiting for a late compiler on a busy machine: see the script), collects garbage
@@ -19,6 +20,14 @@
  * The same is measured on a scene of resting contacts (a stack, balls and a torus on a
  * half-space, sleep off), so the broadphase, the narrowphase and the contact solver are covered,
  * and on a scene of joints (every joint type, the tree solver and Gauss–Seidel, with contacts).
+ *
+ * Why --no-concurrent-recompilation: it changes when V8's optimising compiler runs (on the main
+ * thread, at once) but not what it produces, so the JIT's timeline no longer depends on the load
+ * of the machine and a result seen once is seen every time. With concurrent compilation on a busy
+ * CI machine a race once left a function unoptimised that returned a double (World's norm, boxed
+ * on every call: 2.6 MB per window); with this flag that state was reproduced in every run, and
+ * fixed in the engine (doubles now leave calls through arrays). The fix also passes in the
+ * concurrent mode under load (checked by hand: 36 runs beside two CPU burners, < 38 KB per window).
  *
  * The script imports packages/engine/dist; it is rebuilt here when any source of the algebra or
  * the engine is newer than it.
@@ -60,7 +69,7 @@ beforeAll(() => {
   for (const scene of SCENES) {
     const out = execFileSync(
       process.execPath,
-      ['--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/engine-allocation.mjs'), '10000', scene],
+      ['--no-concurrent-recompilation', '--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/engine-allocation.mjs'), '10000', scene],
       { cwd: root, encoding: 'utf8' },
     );
     Object.assign(results, JSON.parse(out.trim().split('\n').pop()!) as Record<string, Measure>);

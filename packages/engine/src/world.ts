@@ -70,6 +70,38 @@ interface WorldScratch {
   readonly max: Float64Array;
   /** A half-space's world normal (n numbers). */
   readonly normal: Float64Array;
+  /** [0] |v| and [1] |ω| of the body the broadphase stage is on. */
+  readonly speeds: Float64Array;
+}
+
+/**
+ * The Euclidean norm of `a` into `out[slot]`, without overflow for huge finite entries (then
+ * scaled by the largest); Infinity or NaN when an entry is not finite.
+ *
+ * Why an out-parameter: a double returned by a call V8 does not inline is boxed into a fresh heap
+ * number, and whether this call is inlined depends on the compiler's budget and timing. Returned,
+ * it cost two heap numbers per moving body per sub-step whenever it was not (the allocation test
+ * caught it on a busy CI machine).
+ */
+function robustNormInto(out: Float64Array, slot: number, a: Float64Array): void {
+  let s = 0;
+  for (let i = 0; i < a.length; i += 1) s += a[i]! * a[i]!;
+  if (s < Infinity) {
+    out[slot] = Math.sqrt(s);
+    return;
+  }
+  let big = 0;
+  for (let i = 0; i < a.length; i += 1) big = Math.max(big, Math.abs(a[i]!));
+  if (!(big < Infinity)) {
+    out[slot] = big;
+    return;
+  }
+  s = 0;
+  for (let i = 0; i < a.length; i += 1) {
+    const q = a[i]! / big;
+    s += q * q;
+  }
+  out[slot] = big * Math.sqrt(s);
 }
 
 /** The first hit of {@link World.rayCast}. */
@@ -199,6 +231,7 @@ export class World {
       min: new Float64Array(D.n),
       max: new Float64Array(D.n),
       normal: new Float64Array(D.n),
+      speeds: new Float64Array(2),
     };
     this.constants = createStepConstants();
     this.broadphase = createBroadphase(D.n);
@@ -572,26 +605,6 @@ export class World {
   }
 
   /**
-   * The Euclidean norm of `a`, without overflow for huge finite entries (then scaled by the
-   * largest); Infinity or NaN when an entry is not finite. (A small private method that V8
-   * inlines, so the double it returns is not boxed; the allocation test would show it.)
-   */
-  private norm(a: Float64Array): number {
-    let s = 0;
-    for (let i = 0; i < a.length; i += 1) s += a[i]! * a[i]!;
-    if (s < Infinity) return Math.sqrt(s);
-    let big = 0;
-    for (let i = 0; i < a.length; i += 1) big = Math.max(big, Math.abs(a[i]!));
-    if (!(big < Infinity)) return big;
-    s = 0;
-    for (let i = 0; i < a.length; i += 1) {
-      const q = a[i]! / big;
-      s += q * q;
-    }
-    return big * Math.sqrt(s);
-  }
-
-  /**
    * Stage 2: every moving body's box, grown by its reach h·(|v| + |ω|·radius) (the most its
    * surface can travel in the sub-step), and bodies moved by hand; then the broadphase's pair
    * changes go to the contact set. Returns the index of a body whose velocity is not finite (the
@@ -601,6 +614,7 @@ export class World {
     const bodies = this.bodyList;
     const reach = this.reach;
     const h = this.constants[STEP_H]!;
+    const speeds = this.scratch.speeds;
     for (let b = 0; b < bodies.length; b += 1) {
       const body = bodies[b]!;
       if (body.poseDirty) {
@@ -610,8 +624,10 @@ export class World {
         reach[b] = 0;
         continue;
       }
-      const speed = this.norm(body.v);
-      const spin = this.norm(body.w);
+      robustNormInto(speeds, 0, body.v);
+      robustNormInto(speeds, 1, body.w);
+      const speed = speeds[0]!;
+      const spin = speeds[1]!;
       if (!(speed < Infinity) || !(spin < Infinity)) return b;
       const r = h * (speed + spin * body.boundingRadius);
       if (!(r < Infinity)) continue; // finite but beyond reach of any box: nothing can meet it

@@ -11,12 +11,17 @@
 // parameters, timestep 1/60. cannon-es: GSSolver 10 iterations, SAPBroadphase, allowSleep false.
 //
 // Timing: every step is timed alone with performance.now(); a cell is the MEDIAN over the steps
-// of one run (600, started right after building; the median ignores the JIT warm-up of the first
-// steps and the GC pauses). Before each timed run the engine steps a small throwaway pile of the
-// same n (27 boxes, up to 150 steps or 1 s, untimed), so that the first scene of an engine or of
-// a dimension does not pay for the JIT alone. A PhysiN run that exceeds its time budget is cut short: the table
-// gives the steps it ran, and the scene is marked "capped" (its state at the last step it ran is
-// shown, but it does not count as standing).
+// of a run (600, started right after building; the median ignores the JIT warm-up of the first
+// steps and the GC pauses). PhysiN and one peer run in turns of 50 steps (runTogether), so that
+// the drift of a shared machine's speed falls on both alike and their ratio is not a measure of
+// the host; each peer has its own pair (see ROUNDS below). stack9 and pyramid20 are run 3 times
+// and the median run is reported. The n-D ratios are taken the same way (stack9 4D in turns with
+// stack9 3D; the stacks of 5 together).
+// Before each run an engine steps a small throwaway pile of the same n (27 boxes, up to 150 steps
+// or 1 s, untimed), so that the first scene of an engine or of a dimension does not pay for the
+// JIT alone. A PhysiN run that exceeds its time budget is cut short: the table gives the steps it
+// ran, and the scene is marked "capped" (its state at the last step it ran is shown, but it does
+// not count as standing).
 //
 // Exit status: 0 when everything ran, whether or not the targets are met (they are reported in
 // the last table); 1 if a peer or the built engine cannot be loaded, or a scene throws.
@@ -58,46 +63,78 @@ function warmUp(build, n) {
   scene.dispose?.();
 }
 
+/** Steps per turn when several runs share the clock (see runTogether). */
+const BLOCK = 50;
+
 /**
- * Steps `scene` up to `steps` times, timing each step alone; stops early once `budgetMs` of wall
- * clock has passed. Judges the end state only when every step ran.
+ * Runs several lanes — `{ layout, build, budgetMs }`, each one engine on one scene — side by side:
+ * each lane is warmed up and built, then the lanes take turns of BLOCK steps until each has run
+ * `steps` (or spent its `budgetMs` of wall clock). Every step is timed alone.
+ *
+ * Why turns: the machine's speed drifts during a run (a shared host; we measured the same scene
+ * 2× apart a minute later). Run one after the other, one engine could meet a slow minute and the
+ * other a fast one, and their ratio would measure the host. In turns, both meet the same minutes;
+ * a turn of 50 steps keeps each engine's data warm in the cache within its turn.
+ * Returns one result per lane (median, p10, p90 of its step times; the verdict on its end state).
  */
-function run(layout, build, budgetMs = Infinity, steps = STEPS) {
-  let scene;
-  try {
-    warmUp(build, layout.n);
-  } catch (error) {
-    return failed(layout, error);
-  }
-  const t0 = performance.now();
-  try {
-    scene = build(layout);
-  } catch (error) {
-    return failed(layout, error);
-  }
-  const buildMs = performance.now() - t0;
-  const times = new Float64Array(steps);
-  let done = 0;
-  const start = performance.now();
-  try {
-    while (done < steps) {
-      const a = performance.now();
-      scene.step();
-      const b = performance.now();
-      times[done] = b - a;
-      done += 1;
-      if (b - start > budgetMs) break;
+function runTogether(lanes, steps = STEPS) {
+  const states = lanes.map((lane) => {
+    try {
+      warmUp(lane.build, lane.layout.n);
+      const t0 = performance.now();
+      const scene = lane.build(lane.layout);
+      return { lane, scene, buildMs: performance.now() - t0, times: new Float64Array(steps), done: 0, spent: 0, result: null };
+    } catch (error) {
+      return { lane, result: failed(lane.layout, error) };
     }
-  } catch (error) {
-    scene.dispose?.();
-    return failed(layout, error, done);
+  });
+  let active = states.filter((st) => st.result === null);
+  while (active.length > 0) {
+    for (const st of active) {
+      const { scene, times, lane } = st;
+      try {
+        const stop = Math.min(steps, st.done + BLOCK);
+        while (st.done < stop && st.spent <= lane.budgetMs) {
+          const a = performance.now();
+          scene.step();
+          const b = performance.now();
+          times[st.done] = b - a;
+          st.spent += b - a;
+          st.done += 1;
+        }
+      } catch (error) {
+        scene.dispose?.();
+        st.result = failed(lane.layout, error, st.done);
+        continue;
+      }
+      if (st.done === steps || st.spent > lane.budgetMs) st.result = finish(st, steps);
+    }
+    active = active.filter((st) => st.result === null);
   }
-  const sorted = times.subarray(0, done).sort();
+  return states.map((st) => st.result);
+}
+
+/** The result of a lane that stopped: quantiles of its step times and the verdict on its end. */
+function finish(st, steps) {
+  const { done, scene, lane } = st;
+  const sorted = st.times.subarray(0, done).sort();
   const q = (p) => sorted[Math.round((done - 1) * p)];
-  let verdict = judge(layout, scene.positions());
+  let verdict = judge(lane.layout, scene.positions());
   if (done < steps) verdict = { ...verdict, stands: null, measure: `capped at step ${done}: ${verdict.measure}` };
   scene.dispose?.();
-  return { median: q(0.5), p10: q(0.1), p90: q(0.9), steps: done, capped: done < steps, buildMs, ...verdict };
+  return { median: q(0.5), p10: q(0.1), p90: q(0.9), steps: done, capped: done < steps, buildMs: st.buildMs, ...verdict };
+}
+
+/**
+ * `rounds` runs of runTogether; each lane's result is that of its median round (by median
+ * ms/step), so its verdict and quantiles come from one real run; `rounds` is recorded on it.
+ */
+function runRounds(lanes, rounds) {
+  const all = Array.from({ length: rounds }, () => runTogether(lanes));
+  return lanes.map((_, i) => {
+    const mine = all.map((r) => r[i]).sort((x, y) => (Number.isNaN(x.median) ? 1 : Number.isNaN(y.median) ? -1 : x.median - y.median));
+    return { ...mine[Math.floor((mine.length - 1) / 2)], rounds };
+  });
 }
 
 function failed(layout, error, steps = 0) {
@@ -106,6 +143,17 @@ function failed(layout, error, steps = 0) {
   return { median: NaN, p10: NaN, p90: NaN, steps, capped: true, stands: false, measure: `error: ${error?.message ?? error}`, error: true };
 }
 
+/** The cells of a table row that describe one run's result. */
+const resultCells = (layout, r) => ({
+  bodies: layout.positions.length,
+  rounds: r.rounds,
+  steps: r.steps,
+  'ms/step (median)': r.median,
+  p10: r.p10,
+  p90: r.p90,
+  stands: standsCell(r),
+  'at the end': r.measure,
+});
 const standsCell = (r) => (r.error ? 'error' : r.capped ? 'capped' : r.stands === null ? '—' : r.stands ? 'yes' : 'NO');
 
 // ---- 3D: PhysiN and the peers --------------------------------------------------------------
@@ -114,75 +162,73 @@ const engines = [
   { name: 'Rapier', build: (layout) => buildRapierScene(RAPIER, layout), budget: () => Infinity },
   { name: 'cannon-es', build: (layout) => buildCannonScene(CANNON, layout), budget: () => Infinity },
 ];
-const results = {}; // results[scene][engine]
+/** Rounds per 3D scene: the median round is reported. The pile takes a minute a round, so one. */
+const ROUNDS = { stack: 3, pyramid: 3, pile: 1 };
+// PhysiN runs in turns with one peer at a time: cannon-es makes much garbage, and its collection
+// slowed whatever ran beside it (Rapier and PhysiN alike, up to 1.6×), so each ratio comes from a
+// pair that shares nothing else. PhysiN's row beside cannon-es is reported as "PhysiN (2)".
+const [PHYSIN, ...PEERS] = engines;
+const results = {}; // results[scene][engine]; results[scene]['PhysiN vs ' + peer]
 const rows = [];
 for (const layout of peerLayouts()) {
   results[layout.name] = {};
-  for (const engine of engines) {
-    const r = run(layout, engine.build, engine.budget(layout));
-    results[layout.name][engine.name] = r;
-    rows.push({
-      scene: layout.name,
-      engine: engine.name,
-      bodies: layout.positions.length,
-      steps: r.steps,
-      'ms/step (median)': r.median,
-      p10: r.p10,
-      p90: r.p90,
-      stands: standsCell(r),
-      'at the end': r.measure,
-    });
-  }
+  const laneOf = (engine) => ({ layout, build: engine.build, budgetMs: engine.budget(layout) });
+  PEERS.forEach((peer, p) => {
+    const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], ROUNDS[layout.kind] ?? 1);
+    results[layout.name][`PhysiN vs ${peer.name}`] = mine;
+    if (p === 0) results[layout.name].PhysiN = mine;
+    results[layout.name][peer.name] = theirs;
+    for (const [label, r] of [[p === 0 ? 'PhysiN' : `PhysiN (${p + 1})`, mine], [peer.name, theirs]]) {
+      rows.push({ scene: layout.name, engine: label, 'in turns with': label === peer.name ? 'PhysiN' : peer.name, ...resultCells(layout, r) });
+    }
+  });
 }
-medianTable(`3D contact scenes: ms/step, median over the ${STEPS} steps of one run (each step timed alone)`, rows);
+medianTable(`3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${BLOCK} steps; the median of \`rounds\` runs)`, rows);
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
-  '3D contact scenes: ratios of the median ms/step (below 1: PhysiN faster)',
+  '3D contact scenes: ratios of the median ms/step, each against the PhysiN run that shared its turns (below 1: PhysiN faster)',
   peerLayouts().map((layout) => {
     const r = results[layout.name];
+    const capped = [r['PhysiN vs Rapier'], r['PhysiN vs cannon-es']].filter((x) => x.capped);
     return {
       scene: layout.name,
-      PhysiN: r.PhysiN.median,
+      'PhysiN (turns with Rapier)': r['PhysiN vs Rapier'].median,
       Rapier: r.Rapier.median,
+      'PhysiN/Rapier': ratio(r['PhysiN vs Rapier'].median, r.Rapier.median),
+      'PhysiN (turns with cannon-es)': r['PhysiN vs cannon-es'].median,
       'cannon-es': r['cannon-es'].median,
-      'PhysiN/Rapier': ratio(r.PhysiN.median, r.Rapier.median),
-      'PhysiN/cannon-es': ratio(r.PhysiN.median, r['cannon-es'].median),
-      note: r.PhysiN.capped ? `PhysiN capped at ${r.PhysiN.steps} steps` : '',
+      'PhysiN/cannon-es': ratio(r['PhysiN vs cannon-es'].median, r['cannon-es'].median),
+      note: capped.length > 0 ? `PhysiN capped at ${capped[0].steps} steps` : '',
     };
   }),
 );
 
 // ---- PhysiN alone in n dimensions ------------------------------------------------------------
-const physinOnly = [
-  { layout: stackLayout(9, 4, 'stack9 4D'), versus: results.stack9.PhysiN, versusName: 'stack9 3D' },
-  { layout: pileLayout(300, 4, 4, 1004, 'pile300 4D') },
-  ...[2, 3, 4, 5, 6].map((n) => ({ layout: stackLayout(5, n, `stack5 ${n}D`) })),
+// Each group runs in turns (runTogether), so a ratio inside a group compares the same minutes:
+// stack9 4D beside a fresh stack9 3D, and the five stacks of 5 together.
+const physinLane = (layout) => ({ layout, build: (l) => buildPhysinScene(l), budgetMs: layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small });
+const nGroups = [
+  { layouts: [stackLayout(9, 4, 'stack9 4D'), stackLayout(9, 3, 'stack9 3D')], rounds: 3 },
+  { layouts: [pileLayout(300, 4, 4, 1004, 'pile300 4D')], rounds: 1 },
+  { layouts: [2, 3, 4, 5, 6].map((n) => stackLayout(5, n, `stack5 ${n}D`)), rounds: 3 },
 ];
 const nRows = [];
 const nResults = {};
-for (const entry of physinOnly) {
-  const { layout } = entry;
-  const r = run(layout, (l) => buildPhysinScene(l), layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small);
-  nResults[layout.name] = r;
-  nRows.push({
-    scene: layout.name,
-    n: layout.n,
-    bodies: layout.positions.length,
-    steps: r.steps,
-    'ms/step (median)': r.median,
-    p10: r.p10,
-    p90: r.p90,
-    stands: standsCell(r),
-    'at the end': r.measure,
+for (const group of nGroups) {
+  const groupResults = runRounds(group.layouts.map(physinLane), group.rounds);
+  group.layouts.forEach((layout, i) => {
+    const r = groupResults[i];
+    nResults[layout.name] = r;
+    nRows.push({ scene: layout.name, n: layout.n, ...resultCells(layout, r) });
   });
 }
 // Cost growth of the 5-box stack with n, relative to n = 3.
 const base5 = nResults['stack5 3D'].median;
 for (const row of nRows) {
-  row['vs 3D'] = row.scene.startsWith('stack5') ? ratio(row['ms/step (median)'], base5) : row.scene === 'stack9 4D' ? ratio(row['ms/step (median)'], results.stack9.PhysiN.median) : '—';
+  row['vs 3D'] = row.scene.startsWith('stack5') ? ratio(row['ms/step (median)'], base5) : row.scene === 'stack9 4D' ? ratio(row['ms/step (median)'], nResults['stack9 3D'].median) : '—';
 }
-medianTable(`PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of one run ("vs 3D": the same scene in 3D)`, nRows);
+medianTable(`PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of a run ("vs 3D": the same scene in 3D, run in the same turns)`, nRows);
 
 // ---- Targets ----------------------------------------------------------------------------------
 const P = (scene) => results[scene].PhysiN;
@@ -197,16 +243,16 @@ const standing = (scene) => {
   const r = P(scene);
   targets.push({ target: `${scene} stands (PhysiN, 10 s)`, measured: r.measure, limit: 'stands', met: yesNo(r.stands === true && !r.capped) });
 };
-within('stack9: PhysiN / Rapier ms/step', P('stack9').median, results.stack9.Rapier.median, 2);
+within('stack9: PhysiN / Rapier ms/step', results.stack9['PhysiN vs Rapier'].median, results.stack9.Rapier.median, 2);
 standing('stack9');
-within('pyramid20: PhysiN / Rapier ms/step', P('pyramid20').median, results.pyramid20.Rapier.median, 2);
+within('pyramid20: PhysiN / Rapier ms/step', results.pyramid20['PhysiN vs Rapier'].median, results.pyramid20.Rapier.median, 2);
 standing('pyramid20');
-within('pile1000: PhysiN / Rapier ms/step', P('pile1000').median, results.pile1000.Rapier.median, 3);
+within('pile1000: PhysiN / Rapier ms/step', results.pile1000['PhysiN vs Rapier'].median, results.pile1000.Rapier.median, 3);
 for (const scene of ['stack9', 'pyramid20', 'pile1000']) {
-  const x = ratio(P(scene).median, results[scene]['cannon-es'].median);
+  const x = ratio(results[scene]['PhysiN vs cannon-es'].median, results[scene]['cannon-es'].median);
   targets.push({ target: `${scene}: faster than cannon-es`, measured: fmtRatio(x), limit: '< 1×', met: yesNo(x < 1) });
 }
-within('stack9 4D / stack9 3D (PhysiN ms/step)', nResults['stack9 4D'].median, P('stack9').median, 2);
+within('stack9 4D / stack9 3D (PhysiN ms/step, same turns)', nResults['stack9 4D'].median, nResults['stack9 3D'].median, 2);
 medianTable('Targets (medians of ms/step; reported, not asserted)', targets);
 
 const physinRuns = [...Object.values(results).map((r) => r.PhysiN), ...Object.values(nResults)];

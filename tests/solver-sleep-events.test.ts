@@ -2,7 +2,9 @@
  * Sleep and collision events of World.step:
  * - a settled pile sleeps as a whole (velocities exactly zero, the state frozen); a ray cast
  *   finds a sleeping body without waking it; an impulse wakes its island and not a pile far away;
- *   a box dropped on a sleeping pile wakes it; allowSleep false keeps every body awake;
+ *   a box dropped on a sleeping pile wakes it; removing the box under a sleeping one wakes it and
+ *   it falls (its touching pairs end in the next step's events); allowSleep false keeps every
+ *   body awake;
  * - a ball dropped on the ground: one begin event (normal along the ground normal, point at the
  *   ground, impulse > 0), an end event when it bounces off; body listeners get the right other
  *   body and a normal from themselves to it; removeEventListener stops the calls.
@@ -143,6 +145,41 @@ describe('sleep', () => {
       run(world, 0.5);
       for (const b of far) expect(b.isSleeping).toBe(true);
       expect(far.map(state)).toEqual(farBefore);
+    });
+  }
+
+  for (const n of [3, 4]) {
+    it(`n = ${n}: removing the bottom box of a sleeping stack wakes the boxes above, which fall and rest on the ground (centres 0.25 and 0.75 within 0.01); the touching pairs end in the next step's events (not appended to the last step's); a far pile sleeps on`, () => {
+      const { world, ground } = makeWorld(n);
+      const near = stack(world, 0, 3, 'near');
+      const far = stack(world, 10, 3, 'far');
+      run(world, 4);
+      expect([...near, ...far].every((b) => b.isSleeping)).toBe(true);
+      const [bottom, middle, top] = near as [Body, Body, Body];
+      const heard: string[] = [];
+      middle.addEventListener('collision', (e: CollisionEvent) => heard.push(`${e.type} ${e.other.name}`));
+      const endsBefore = world.contactEvents.endCount;
+      world.removeBody(bottom);
+      // The last step's list is what it was; the bodies that touched the removed one are awake.
+      expect(world.contactEvents.endCount).toBe(endsBefore);
+      expect(middle.isSleeping).toBe(false);
+      world.step(H);
+      const ev = world.contactEvents;
+      const ends = new Set<string>();
+      for (let i = 0; i < ev.endCount; i += 1) ends.add([ev.endA[i]!.name, ev.endB[i]!.name].sort().join('-'));
+      expect(ends).toEqual(new Set(['ground-near0', 'near0-near1']));
+      expect(heard).toEqual(['end near0']);
+      expect(top.isSleeping).toBe(false); // its island woke with the middle box
+      run(world, 3);
+      expect(Math.abs(middle.x[1]! - 0.25)).toBeLessThan(0.01);
+      expect(Math.abs(top.x[1]! - 0.75)).toBeLessThan(0.01);
+      for (const b of far) expect(b.isSleeping).toBe(true);
+      expect(ground.isSleeping).toBe(false);
+      // the end is reported once: no further end events of the removed body
+      world.step(H);
+      for (let i = 0; i < world.contactEvents.endCount; i += 1) {
+        expect([world.contactEvents.endA[i], world.contactEvents.endB[i]]).not.toContain(bottom);
+      }
     });
   }
 

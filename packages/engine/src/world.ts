@@ -364,7 +364,9 @@ export class World {
   }
 
   /**
-   * Removes a body (its state is kept; it may be added again, here or to another world).
+   * Removes a body (its state is kept; it may be added again, here or to another world). The
+   * bodies it touched wake (what rested on it falls), and each touching pair ends with an 'end'
+   * event in the events of the next step.
    * @throws TypeError if `body` is not a Body; RangeError if it is not in this world.
    */
   removeBody(body: Body): this {
@@ -381,7 +383,7 @@ export class World {
     }
     this.bodyList.splice(index, 1);
     for (let i = index; i < this.bodyList.length; i += 1) this.bodyList[i]!.worldIndex = i;
-    this.contacts.removeBody(body);
+    this.contacts.removeBody(body, this.events);
     this.broadphase.destroyProxy(body.proxyId);
     this.bodyOfProxy[body.proxyId] = null;
     body.proxyId = -1;

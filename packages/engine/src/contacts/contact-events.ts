@@ -57,6 +57,10 @@ export class ContactEvents {
   readonly endA: Body[] = [];
   /** Second body of each end event. */
   readonly endB: Body[] = [];
+  /** End events of pairs whose body left the world between steps, for the next step's list. */
+  private readonly laterA: Body[] = [];
+  private readonly laterB: Body[] = [];
+  private laterCount = 0;
 
   constructor(n: number) {
     this.n = n;
@@ -65,10 +69,29 @@ export class ContactEvents {
     this.beginImpulse = new Float64Array(8);
   }
 
-  /** Forgets the events of the last step. */
+  /**
+   * Forgets the events of the last step; the end events recorded since by
+   * {@link ContactEvents.pushEndLater} become the first of the new step's list.
+   */
   clear(): void {
     this.beginCount = 0;
-    this.endCount = 0;
+    for (let i = 0; i < this.laterCount; i += 1) {
+      this.endA[i] = this.laterA[i]!;
+      this.endB[i] = this.laterB[i]!;
+    }
+    this.endCount = this.laterCount;
+    this.laterCount = 0;
+  }
+
+  /**
+   * Records that A and B stopped touching between steps (one of them left the world). Reported
+   * with the events of the next step, as Box2D does, so that a reader of the last step's list is
+   * not surprised by an event appended after the step, and no end goes unreported.
+   */
+  pushEndLater(A: Body, B: Body): void {
+    const i = this.laterCount++;
+    this.laterA[i] = A;
+    this.laterB[i] = B;
   }
 
   /**

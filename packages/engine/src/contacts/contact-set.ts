@@ -235,13 +235,24 @@ export class ContactSet {
     this.count = o;
   }
 
-  /** Removes every contact of `body` (when it leaves the world). Not for the step. */
-  removeBody(body: Body): void {
+  /**
+   * Removes every contact of `body` (when it leaves the world). Not for the step. Each pair that
+   * was touching records an end event for the next step, and the other body wakes: what rested
+   * on the body must fall (its island wakes with it at the next island pass).
+   */
+  removeBody(body: Body, events: ContactEvents): void {
     let o = 0;
     for (let i = 0; i < this.count; i += 1) {
       const slot = this.order[i];
-      if (this.bodyA[slot] === body || this.bodyB[slot] === body) this.freeSlot(slot);
-      else this.order[o++] = slot;
+      const A = this.bodyA[slot];
+      const B = this.bodyB[slot];
+      if (A === body || B === body) {
+        if (this.flags[slot] & CONTACT_TOUCHING) {
+          events.pushEndLater(A!, B!);
+          (A === body ? B : A)!.wake();
+        }
+        this.freeSlot(slot);
+      } else this.order[o++] = slot;
     }
     this.count = o;
   }

@@ -12,7 +12,7 @@
 //
 // Timing: every step is timed alone with performance.now(); a cell is the MEDIAN over the steps
 // of a run (600, started right after building; the median ignores the JIT warm-up of the first
-// steps and the GC pauses). PhysiN and one peer run in turns of 50 steps (runTogether), so that
+// steps and the GC pauses). PhysiN and one peer run in turns of 50 steps (bench/lib/turns.mjs), so that
 // the drift of a shared machine's speed falls on both alike and their ratio is not a measure of
 // the host; each peer has its own pair (see ROUNDS below). stack9 and pyramid20 are run 3 times
 // and the median run is reported. The n-D ratios are taken the same way (stack9 4D in turns with
@@ -29,6 +29,7 @@
 // Run: node bench/contacts.bench.mjs    (after the build: it imports the BUILT packages)
 import { performance } from 'node:perf_hooks';
 import { medianTable } from './lib/table.mjs';
+import { TURN_STEPS, runRoundsInTurns } from './lib/turns.mjs';
 import { STEPS, judge, pileLayout, peerLayouts, stackLayout } from './scenes/layouts.mjs';
 import { buildCannonScene, buildRapierScene, loadCannon, loadRapier } from './scenes/peer-scenes.mjs';
 
@@ -63,83 +64,34 @@ function warmUp(build, n) {
   scene.dispose?.();
 }
 
-/** Steps per turn when several runs share the clock (see runTogether). */
-const BLOCK = 50;
-
 /**
- * Runs several lanes — `{ layout, build, budgetMs }`, each one engine on one scene — side by side:
- * each lane is warmed up and built, then the lanes take turns of BLOCK steps until each has run
- * `steps` (or spent its `budgetMs` of wall clock). Every step is timed alone.
- *
- * Why turns: the machine's speed drifts during a run (a shared host; we measured the same scene
- * 2× apart a minute later). Run one after the other, one engine could meet a slow minute and the
- * other a fast one, and their ratio would measure the host. In turns, both meet the same minutes;
- * a turn of 50 steps keeps each engine's data warm in the cache within its turn.
- * Returns one result per lane (median, p10, p90 of its step times; the verdict on its end state).
+ * A lane of bench/lib/turns.mjs: `build(layout)` of one engine, warmed up on a small pile of the
+ * same n, judged at the end (a capped run does not count as standing).
  */
-function runTogether(lanes, steps = STEPS) {
-  const states = lanes.map((lane) => {
-    try {
-      warmUp(lane.build, lane.layout.n);
-      const t0 = performance.now();
-      const scene = lane.build(lane.layout);
-      return { lane, scene, buildMs: performance.now() - t0, times: new Float64Array(steps), done: 0, spent: 0, result: null };
-    } catch (error) {
-      return { lane, result: failed(lane.layout, error) };
-    }
-  });
-  let active = states.filter((st) => st.result === null);
-  while (active.length > 0) {
-    for (const st of active) {
-      const { scene, times, lane } = st;
-      try {
-        const stop = Math.min(steps, st.done + BLOCK);
-        while (st.done < stop && st.spent <= lane.budgetMs) {
-          const a = performance.now();
-          scene.step();
-          const b = performance.now();
-          times[st.done] = b - a;
-          st.spent += b - a;
-          st.done += 1;
-        }
-      } catch (error) {
-        scene.dispose?.();
-        st.result = failed(lane.layout, error, st.done);
-        continue;
-      }
-      if (st.done === steps || st.spent > lane.budgetMs) st.result = finish(st, steps);
-    }
-    active = active.filter((st) => st.result === null);
-  }
-  return states.map((st) => st.result);
+function lane(layout, build, budgetMs) {
+  return {
+    label: layout.name,
+    prepare: () => warmUp(build, layout.n),
+    build: () => build(layout),
+    step: (scene) => scene.step(),
+    finish: (scene, capped) => {
+      const verdict = judge(layout, scene.positions());
+      return capped ? { ...verdict, stands: null, measure: `capped: ${verdict.measure}` } : verdict;
+    },
+    budgetMs,
+  };
 }
 
-/** The result of a lane that stopped: quantiles of its step times and the verdict on its end. */
-function finish(st, steps) {
-  const { done, scene, lane } = st;
-  const sorted = st.times.subarray(0, done).sort();
-  const q = (p) => sorted[Math.round((done - 1) * p)];
-  let verdict = judge(lane.layout, scene.positions());
-  if (done < steps) verdict = { ...verdict, stands: null, measure: `capped at step ${done}: ${verdict.measure}` };
-  scene.dispose?.();
-  return { median: q(0.5), p10: q(0.1), p90: q(0.9), steps: done, capped: done < steps, buildMs: st.buildMs, ...verdict };
-}
-
-/**
- * `rounds` runs of runTogether; each lane's result is that of its median round (by median
- * ms/step), so its verdict and quantiles come from one real run; `rounds` is recorded on it.
- */
+/** runRoundsInTurns over `lanes` (one per layout), with the failures reported by layout. */
 function runRounds(lanes, rounds) {
-  const all = Array.from({ length: rounds }, () => runTogether(lanes));
-  return lanes.map((_, i) => {
-    const mine = all.map((r) => r[i]).sort((x, y) => (Number.isNaN(x.median) ? 1 : Number.isNaN(y.median) ? -1 : x.median - y.median));
-    return { ...mine[Math.floor((mine.length - 1) / 2)], rounds };
-  });
+  return runRoundsInTurns(lanes, rounds, { steps: STEPS }).map((r, i) =>
+    r.error !== undefined ? { ...failed(lanes[i].label, r.error, r.steps), rounds } : r,
+  );
 }
 
-function failed(layout, error, steps = 0) {
+function failed(label, error, steps = 0) {
   failures += 1;
-  console.error(`contacts.bench: ${layout.name} threw after ${steps} steps: ${error?.stack ?? error}`);
+  console.error(`contacts.bench: ${label} threw after ${steps} steps: ${error?.stack ?? error}`);
   return { median: NaN, p10: NaN, p90: NaN, steps, capped: true, stands: false, measure: `error: ${error?.message ?? error}`, error: true };
 }
 
@@ -172,7 +124,7 @@ const results = {}; // results[scene][engine]; results[scene]['PhysiN vs ' + pee
 const rows = [];
 for (const layout of peerLayouts()) {
   results[layout.name] = {};
-  const laneOf = (engine) => ({ layout, build: engine.build, budgetMs: engine.budget(layout) });
+  const laneOf = (engine) => lane(layout, engine.build, engine.budget(layout));
   PEERS.forEach((peer, p) => {
     const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], ROUNDS[layout.kind] ?? 1);
     results[layout.name][`PhysiN vs ${peer.name}`] = mine;
@@ -183,7 +135,7 @@ for (const layout of peerLayouts()) {
     }
   });
 }
-medianTable(`3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${BLOCK} steps; the median of \`rounds\` runs)`, rows);
+medianTable(`3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs)`, rows);
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
@@ -205,9 +157,9 @@ medianTable(
 );
 
 // ---- PhysiN alone in n dimensions ------------------------------------------------------------
-// Each group runs in turns (runTogether), so a ratio inside a group compares the same minutes:
+// Each group runs in turns (bench/lib/turns.mjs), so a ratio inside a group compares the same minutes:
 // stack9 4D beside a fresh stack9 3D, and the five stacks of 5 together.
-const physinLane = (layout) => ({ layout, build: (l) => buildPhysinScene(l), budgetMs: layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small });
+const physinLane = (layout) => lane(layout, (l) => buildPhysinScene(l), layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small);
 const nGroups = [
   { layouts: [stackLayout(9, 4, 'stack9 4D'), stackLayout(9, 3, 'stack9 3D')], rounds: 3 },
   { layouts: [pileLayout(300, 4, 4, 1004, 'pile300 4D')], rounds: 1 },

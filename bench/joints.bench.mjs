@@ -15,21 +15,23 @@
 // impulse joints. cannon-es: GSSolver 10 iterations, SAPBroadphase, PointToPointConstraint.
 // Contacts between the two bodies of a joint are off in every engine.
 //
-// Measures: ms/step is the MEDIAN over the individually timed steps of one run (p10 and p90
-// beside it); the joint error (distance between the world positions of a joint's two anchors,
+// Measures: ms/step is the MEDIAN over the individually timed steps of a run (p10 and p90 beside
+// it). PhysiN runs in turns of 50 steps with one peer at a time (bench/lib/turns.mjs), so the drift
+// of a shared machine's speed falls on both engines of a ratio; the 4D chains run in turns with the
+// same 3D chains. The joint error (distance between the world positions of a joint's two anchors,
 // computed from the bodies' poses after each step, outside the timing) is the worst over every
 // joint and step, and its value at the last step. Before each timed run the engine steps a small
 // chain untimed (60 steps) so the first scene does not pay for the JIT alone. The energy columns
 // (kinetic + m g y, J) say what a method paid for its accuracy: ΔE at 10 s (negative: energy lost,
-// e.g. to a position projection) and the largest rise above the start (positive: energy put in). Runs are cut short
-// after a wall-clock budget (marked capped).
+// e.g. to a position projection) and the largest rise above the start (positive: energy put in).
+// Runs are cut short after a wall-clock budget (marked capped).
 //
 // Exit status: 0 when everything ran, whether or not the targets are met (they are reported in the
 // last table); 1 if a peer or the built engine cannot be loaded, or a scene throws.
 //
 // Run: node bench/joints.bench.mjs    (after the build: it imports the BUILT packages)
-import { performance } from 'node:perf_hooks';
 import { medianTable } from './lib/table.mjs';
+import { runRoundsInTurns } from './lib/turns.mjs';
 import { loadCannon, loadRapier } from './scenes/peer-scenes.mjs';
 
 const DT = 1 / 60;
@@ -55,49 +57,56 @@ try {
 
 let failures = 0;
 
-function run(label, build, warm) {
-  try {
-    const w = warm();
-    for (let i = 0; i < 60; i += 1) w.step(DT);
-    w.dispose();
-  } catch (error) {
-    failures += 1;
-    console.error(`joints.bench: ${label} warm-up threw: ${error?.stack ?? error}`);
-    return { median: NaN, p10: NaN, p90: NaN, steps: 0, worst: NaN, last: NaN, capped: true, error: true };
-  }
-  let scene;
-  const times = new Float64Array(STEPS);
-  let done = 0;
+/**
+ * A lane of bench/lib/turns.mjs for a joint scene: warmed up on a small chain (60 steps, untimed);
+ * after each step the joint error and the energy are read (untimed).
+ */
+function lane(label, build, warm) {
   let worst = 0;
   let last = NaN;
   let e0 = NaN;
   let eMax = -Infinity;
-  let eEnd = NaN;
-  try {
-    scene = build();
-    e0 = scene.energy();
-    const start = performance.now();
-    while (done < STEPS) {
-      const a = performance.now();
-      scene.step(DT);
-      const b = performance.now();
-      times[done] = b - a;
-      done += 1;
+  return {
+    label,
+    prepare: () => {
+      const w = warm();
+      for (let i = 0; i < 60; i += 1) w.step(DT);
+      w.dispose();
+    },
+    build: () => {
+      const scene = build();
+      worst = 0;
+      last = NaN;
+      e0 = scene.energy();
+      eMax = -Infinity;
+      return scene;
+    },
+    step: (scene) => scene.step(DT),
+    observe: (scene) => {
       last = scene.error();
       if (!(last <= worst)) worst = Number.isFinite(last) ? Math.max(worst, last) : Infinity;
       eMax = Math.max(eMax, scene.energy());
-      if (b - start > BUDGET_MS) break;
-    }
-    eEnd = scene.energy();
-    scene.dispose();
-  } catch (error) {
+    },
+    finish: (scene) => ({ worst, last, gain: eMax - e0, change: scene.energy() - e0 }),
+    budgetMs: BUDGET_MS,
+  };
+}
+
+/** Rounds of a group: the chains are cheap, so the median of 3; the grid once. */
+const roundsOf = (entries) => (entries.some((r) => r.scene === 'grid20') ? 1 : 3);
+
+/**
+ * Runs `entries` (see `runs` below) in turns, `roundsOf` times, each lane's median round kept; a
+ * lane that threw is reported and counted.
+ */
+function runTogether(entries) {
+  const lanes = entries.map((r) => lane(`${r.scene} ${r.engine}`, r.build, r.warm));
+  return runRoundsInTurns(lanes, roundsOf(entries), { steps: STEPS }).map((x, i) => {
+    if (x.error === undefined) return x;
     failures += 1;
-    console.error(`joints.bench: ${label} threw after ${done} steps: ${error?.stack ?? error}`);
-    return { median: NaN, p10: NaN, p90: NaN, steps: done, worst: NaN, last: NaN, capped: true, error: true };
-  }
-  const sorted = times.subarray(0, done).sort();
-  const q = (p) => sorted[Math.round((done - 1) * p)];
-  return { median: q(0.5), p10: q(0.1), p90: q(0.9), steps: done, worst, last, gain: eMax - e0, change: eEnd - e0, capped: done < STEPS };
+    console.error(`joints.bench: ${entries[i].scene} ${entries[i].engine} threw after ${x.steps} steps: ${x.error?.stack ?? x.error}`);
+    return { median: NaN, p10: NaN, p90: NaN, steps: x.steps, worst: NaN, last: NaN, capped: true, error: true, rounds: x.rounds };
+  });
 }
 
 const warmPhysin = () => S.physinChain({ n: 3 });
@@ -129,6 +138,7 @@ const row = (r, x) => ({
   engine: r.engine,
   bodies: r.bodies,
   joints: r.joints,
+  rounds: x.rounds,
   steps: x.capped ? `${x.steps} (capped)` : x.steps,
   'ms/step (median)': x.median,
   p10: x.p10,
@@ -138,41 +148,57 @@ const row = (r, x) => ({
   'ΔE at 10 s (J)': x.change,
   'max E − E0 (J)': x.gain,
 });
+// PhysiN runs in turns with one peer at a time (bench/lib/turns.mjs): first its rows with Rapier,
+// then PhysiN again with cannon-es; each time ratio comes from the pair that shared the clock.
 const rows3 = [];
-for (const r of runs) {
-  const x = run(`${r.scene} ${r.engine}`, r.build, r.warm);
-  results[`${r.scene}|${r.engine}`] = x;
-  rows3.push(row(r, x));
+for (const scene of ['chain10 whip', 'chain10 hang', 'grid20']) {
+  const mine = runs.filter((r) => r.scene === scene && r.engine.startsWith('PhysiN'));
+  const peer = (name) => runs.find((r) => r.scene === scene && r.engine === name);
+  const withRapier = [...mine, peer('Rapier')];
+  const withCannon = [mine[0], peer('cannon-es')];
+  runTogether(withRapier).forEach((x, i) => {
+    results[`${scene}|${withRapier[i].engine}`] = x;
+    rows3.push({ ...row(withRapier[i], x), 'in turns with': i < mine.length ? 'Rapier' : 'PhysiN' });
+  });
+  runTogether(withCannon).forEach((x, i) => {
+    const key = i === 0 ? 'PhysiN (2)' : 'cannon-es';
+    results[`${scene}|${key}`] = x;
+    rows3.push({ ...row({ ...withCannon[i], engine: key }, x), 'in turns with': i === 0 ? 'cannon-es' : 'PhysiN' });
+  });
 }
-medianTable(`3D joint scenes: ms/step, median over the ${STEPS} steps of one run (each step timed alone); worst joint error over 10 s`, rows3);
+medianTable(`3D joint scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; PhysiN and one peer in turns); worst joint error over 10 s`, rows3);
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
   '3D joint scenes: ratios of the median ms/step (below 1: PhysiN faster) and of the worst joint error (below 1: PhysiN more accurate)',
   ['chain10 whip', 'chain10 hang', 'grid20'].map((scene) => {
     const p = results[`${scene}|PhysiN`];
+    const p2 = results[`${scene}|PhysiN (2)`];
     const ra = results[`${scene}|Rapier`];
     const ca = results[`${scene}|cannon-es`];
     return {
       scene,
       'time PhysiN/Rapier': ratio(p.median, ra.median),
-      'time PhysiN/cannon-es': ratio(p.median, ca.median),
+      'time PhysiN/cannon-es': ratio(p2.median, ca.median),
       'error PhysiN/Rapier': ratio(p.worst, ra.worst),
       'error PhysiN/cannon-es': ratio(p.worst, ca.worst),
     };
   }),
 );
 
+// The 4D chains in turns with the same 3D chains, for the "time vs 3D" column.
 const rows4 = [];
-for (const r of fourD) {
-  const x = run(`${r.scene} ${r.engine}`, r.build, r.warm);
+const pairs4 = fourD.map((r) => [r, runs.find((q) => q.scene === r.scene.replace(' 4D', '') && q.engine === r.engine)]);
+const done4 = runTogether(pairs4.flat());
+pairs4.forEach(([r], i) => {
+  const x = done4[2 * i];
+  const same3 = done4[2 * i + 1];
   results[`${r.scene}|${r.engine}`] = x;
   const out = row(r, x);
-  const same3 = results[`${r.scene.replace(' 4D', '')}|${r.engine}`];
-  out['time vs 3D'] = same3 ? ratio(x.median, same3.median) : '—';
+  out['time vs 3D'] = ratio(x.median, same3.median);
   rows4.push(out);
-}
-medianTable(`PhysiN in 4D: ms/step, median over the ${STEPS} steps of one run; worst joint error over 10 s ("time vs 3D": the same scene and settings in 3D)`, rows4);
+});
+medianTable(`PhysiN in 4D: ms/step, median over the ${STEPS} steps of one run; worst joint error over 10 s ("time vs 3D": the same scene and settings in 3D, run in the same turns)`, rows4);
 
 // ---- Targets ----------------------------------------------------------------------------------
 const yesNo = (ok) => (ok ? 'yes' : 'NO');

@@ -219,7 +219,8 @@ export class ContactSolver {
           const off = r === 0 ? 0 : (r - 1) * n;
           for (let d = 0; d < n; d += 1) rows[base + d] = dir[off + d];
           if (fast === 3) {
-            // n = 3 written out (the same sums in the same order as the general loop below).
+            // n = 3 written out (the same sums in the same order as the general loop below; each
+            // sum starts at `0 +` as the loop's does, so a −0 product still sums to +0).
             const d0 = rows[base];
             const d1 = rows[base + 1];
             const d2 = rows[base + 2];
@@ -259,7 +260,6 @@ export class ContactSolver {
             rows[base + 15] = K > 0 ? 1 / K : 0;
             rows[base + 16] = KA;
             rows[base + 17] = KB;
-
           } else if (fast === 4) {
             // n = 4 written out (the same sums in the same order as the general loop below).
             const d0 = rows[base];

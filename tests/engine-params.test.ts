@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import { defaultParams, mergeParams, validateParams, World } from '@physin/engine';
 
-// The specification's section 12 table, plus the two damping rates.
+// The specification's section 12 table, plus the two damping rates and the manifold reuse tolerance.
 const table: Record<string, number | boolean> = {
   fixedTimeStep: 1 / 60,
   subSteps: 1,
@@ -34,6 +34,7 @@ const table: Record<string, number | boolean> = {
   useWarmStart: true,
   linearDamping: 0,
   angularDamping: 0,
+  manifoldReuseTolerance: 1e-4,
 };
 
 describe('defaultParams', () => {
@@ -93,6 +94,8 @@ describe('validateParams', () => {
     ['useWarmStart', undefined, 'TypeError'],
     ['linearDamping', -0.1, 'RangeError'],
     ['angularDamping', Infinity, 'RangeError'],
+    ['manifoldReuseTolerance', -1e-4, 'RangeError'],
+    ['manifoldReuseTolerance', '1e-4', 'TypeError'],
   ];
   for (const [name, value, kind] of bad) {
     it(`${name} = ${String(value)} throws a ${kind} naming '${name}'`, () => {

@@ -11,7 +11,7 @@
 /**
  * The engine's parameters. Units: seconds (s), metres (m), radians (rad), hertz (Hz); counts are
  * integers. Names and defaults follow the specification's tolerance table; `linearDamping` and
- * `angularDamping` are additions (default 0: no damping).
+ * `angularDamping` are additions (default 0: no damping), and so is `manifoldReuseTolerance`.
  */
 export interface Params {
   /** Length of one step of a fixed-rate loop (s). A helper for callers: `World.step(dt)` takes its own dt. */
@@ -87,6 +87,13 @@ export interface Params {
    * 0 (the default) leaves L untouched, so a torque-free body keeps L bit-exactly.
    */
   readonly angularDamping: number;
+  /**
+   * How far (m, >= 0) any point of one box may move relative to the other, since their manifold
+   * was computed, before the narrowphase computes it again; meanwhile the manifold's points move
+   * with the boxes and their separations are measured afresh (see docs/collision.md, "Manifold
+   * reuse"). 0 computes every box–box manifold every sub-step.
+   */
+  readonly manifoldReuseTolerance: number;
 }
 
 /** The defaults of every parameter (frozen). */
@@ -118,6 +125,7 @@ export const defaultParams: Readonly<Params> = Object.freeze({
   useWarmStart: true,
   linearDamping: 0,
   angularDamping: 0,
+  manifoldReuseTolerance: 1e-4,
 });
 
 /** Upper bound of the integer counts (sub-steps, iterations): a guard against typos such as 1e9. */
@@ -163,6 +171,7 @@ const rules: { readonly [K in keyof Params]: Rule } = {
   useWarmStart: flag,
   linearDamping: nonNegative,
   angularDamping: nonNegative,
+  manifoldReuseTolerance: nonNegative,
 };
 
 /** The names of every parameter, in the order of the specification's table. */

@@ -19,7 +19,12 @@ import { createManifold, maxManifoldPoints } from '../collision/manifold.js';
 import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
+import type { BoxShape } from '../shapes/box.js';
 import type { ContactEvents } from './contact-events.js';
+import { ManifoldCache } from './manifold-cache.js';
+
+export { growFloat64, growInt32 } from './grow.js';
+import { growFloat64, growInt32 } from './grow.js';
 
 /** Flag: the manifold has a point closer than the contact margin (the pair touches). */
 export const CONTACT_TOUCHING = 1;
@@ -30,26 +35,6 @@ export const CONTACT_ACTIVE = 4;
 
 /** Key of the pair of proxies (a, b), a < b: a·2²⁶ + b, exact in a double. */
 export const PAIR_KEY_SCALE = 67_108_864;
-
-/** Grows a Float64Array to at least `need` entries, doubling, keeping the first `keep`. */
-export function growFloat64(a: Float64Array, need: number, keep = a.length): Float64Array<ArrayBuffer> {
-  if (need <= a.length) return a as Float64Array<ArrayBuffer>;
-  let len = Math.max(1, a.length);
-  while (len < need) len *= 2;
-  const out = new Float64Array(len);
-  out.set(a.subarray(0, Math.min(keep, a.length)));
-  return out;
-}
-
-/** Grows an Int32Array to at least `need` entries, doubling, keeping the first `keep`. */
-export function growInt32(a: Int32Array, need: number, keep = a.length): Int32Array<ArrayBuffer> {
-  if (need <= a.length) return a as Int32Array<ArrayBuffer>;
-  let len = Math.max(1, a.length);
-  while (len < need) len *= 2;
-  const out = new Int32Array(len);
-  out.set(a.subarray(0, Math.min(keep, a.length)));
-  return out;
-}
 
 /**
  * Whether the body moves in this sub-step: an awake dynamic body, or a kinematic body with a
@@ -114,6 +99,10 @@ export class ContactSet {
   private readonly oldNormal: Float64Array;
   private readonly oldTangent: Float64Array;
   private readonly oldApproach: Float64Array;
+  /** Box–box manifolds kept while the two boxes hardly move relative to each other. */
+  private readonly cache: ManifoldCache;
+  /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
+  private readonly reuseNumbers = new Float64Array(2);
 
   constructor(n: number) {
     this.n = n;
@@ -125,6 +114,7 @@ export class ContactSet {
     this.oldNormal = new Float64Array(this.pointCapacity);
     this.oldTangent = new Float64Array(this.pointCapacity * n);
     this.oldApproach = new Float64Array(this.pointCapacity);
+    this.cache = new ManifoldCache(n, this.pointCapacity);
     this.ensureSlots(16);
   }
 
@@ -152,6 +142,7 @@ export class ContactSet {
     }
     // New slots are handed out lowest first.
     for (let s = cap - 1; s >= this.capacity; s -= 1) this.freeSlots[this.freeCount++] = s;
+    this.cache.ensureSlots(cap);
     this.capacity = cap;
   }
 
@@ -165,6 +156,7 @@ export class ContactSet {
     this.bodyB[slot] = null;
     this.manifolds[slot].count = 0;
     this.flags[slot] = 0;
+    this.cache.forget(slot);
     this.freeSlots[this.freeCount++] = slot;
   }
 
@@ -278,6 +270,9 @@ export class ContactSet {
     const oldNormal = this.oldNormal;
     const oldTangent = this.oldTangent;
     const oldApproach = this.oldApproach;
+    const reuseTolerance = params.manifoldReuseTolerance;
+    const reuseNumbers = this.reuseNumbers;
+    reuseNumbers[0] = reuseTolerance;
     for (let i = 0; i < this.count; i += 1) {
       const slot = this.order[i];
       const A = this.bodyA[slot]!;
@@ -291,6 +286,7 @@ export class ContactSet {
       if (A.jointPeers !== null && A.jointPeers.indexOf(B) >= 0) {
         // A joint with collideConnected false holds the two: no contact between them.
         this.manifolds[slot].count = 0;
+        this.cache.forget(slot);
         this.flags[slot] = flags;
         continue;
       }
@@ -320,7 +316,24 @@ export class ContactSet {
         }
         if (apart) {
           m.count = 0;
+          this.cache.forget(slot);
           this.flags[slot] = flags | CONTACT_ACTIVE;
+          continue;
+        }
+      }
+      // Box–box: reuse the manifold while the boxes have hardly moved relative to each other
+      // (manifold-cache.ts); its points, ids and impulses stay where they are.
+      const reusable = reuseTolerance > 0 && A.shape.kind === 'box' && B.shape.kind === 'box';
+      if (reusable) {
+        const h = (B.shape as BoxShape).halfExtents;
+        let r2 = 0;
+        for (let c = 0; c < n; c += 1) r2 += h[c] * h[c];
+        reuseNumbers[1] = Math.sqrt(r2);
+        if (this.cache.check(slot, A.pose!, B.pose!, reuseNumbers)) {
+          this.cache.reuse(slot, m, A.pose!, B.pose!);
+          let touching = false;
+          for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
+          this.flags[slot] = flags | CONTACT_ACTIVE | (touching ? CONTACT_TOUCHING : 0);
           continue;
         }
       }
@@ -332,6 +345,7 @@ export class ContactSet {
       for (let c = 0; c < n; c += 1) finite += m.normal[c] * 0;
       for (let p = 0; p < m.count; p += 1) finite += m.separations[p] * 0 + m.points[p * n] * 0;
       if (finite !== 0) m.count = 0;
+      if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
       let touching = false;
       for (let p = 0; p < m.count; p += 1) {
         if (m.separations[p] < margin) touching = true;

@@ -21,6 +21,7 @@
  * @module
  */
 import type { Manifold, Pose } from '../collision/manifold.js';
+import { pointToLocal } from '../collision/manifold.js';
 import { growFloat64 } from './grow.js';
 
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
@@ -77,14 +78,8 @@ export class ManifoldCache {
     const now = this.now;
     const MA = poseA.M;
     const MB = poseB.M;
-    const xA = poseA.x;
-    const xB = poseB.x;
-    // x_rel = M_Aᵀ (x_B − x_A), R_rel = M_Aᵀ M_B
-    for (let c = 0; c < n; c += 1) {
-      let s = 0;
-      for (let i = 0; i < n; i += 1) s += MA[i * n + c] * (xB[i] - xA[i]);
-      now[c] = s;
-    }
+    // x_rel = M_Aᵀ (x_B − x_A) (into now[0, n)), R_rel = M_Aᵀ M_B
+    pointToLocal(now, n, poseA, poseB.x);
     for (let r = 0; r < n; r += 1) {
       for (let c = 0; c < n; c += 1) {
         let s = 0;

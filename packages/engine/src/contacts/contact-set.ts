@@ -345,7 +345,10 @@ export class ContactSet {
       for (let c = 0; c < n; c += 1) finite += m.normal[c] * 0;
       for (let p = 0; p < m.count; p += 1) finite += m.separations[p] * 0 + m.points[p * n] * 0;
       if (finite !== 0) m.count = 0;
+      // (Not reusable, e.g. the tolerance set to 0 for a while: forget, so that a later reuse
+      // never pairs this manifold's ids with points cached before it.)
       if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
+      else this.cache.forget(slot);
       let touching = false;
       for (let p = 0; p < m.count; p += 1) {
         if (m.separations[p] < margin) touching = true;

@@ -291,15 +291,6 @@ export class ContactSet {
         continue;
       }
       const m = this.manifolds[slot];
-      const oldCount = m.count;
-      const ni = slot * P;
-      const ti = ni * n;
-      for (let p = 0; p < oldCount; p += 1) {
-        oldIds[p] = m.ids[p];
-        oldNormal[p] = this.normalImpulse[ni + p];
-        oldApproach[p] = this.approachSpeed[ni + p];
-        for (let c = 0; c < n; c += 1) oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
-      }
       const pairMargin = margin + reach[A.worldIndex] + reach[B.worldIndex];
       // The broadphase pairs fattened boxes; most such pairs in a pile are farther apart than the
       // margin. Their tight boxes (already grown by the reaches) then miss each other by more
@@ -336,6 +327,17 @@ export class ContactSet {
           this.flags[slot] = flags | CONTACT_ACTIVE | (touching ? CONTACT_TOUCHING : 0);
           continue;
         }
+      }
+      // The impulses of the old points, to be matched by id once the narrowphase has run (only
+      // here: a pair found apart or a reused manifold needs none).
+      const oldCount = m.count;
+      const ni = slot * P;
+      const ti = ni * n;
+      for (let p = 0; p < oldCount; p += 1) {
+        oldIds[p] = m.ids[p];
+        oldNormal[p] = this.normalImpulse[ni + p];
+        oldApproach[p] = this.approachSpeed[ni + p];
+        for (let c = 0; c < n; c += 1) oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
       }
       scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
       collideScratch(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, scratch);

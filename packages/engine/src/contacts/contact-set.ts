@@ -99,6 +99,9 @@ export class ContactSet {
   private readonly oldNormal: Float64Array;
   private readonly oldTangent: Float64Array;
   private readonly oldApproach: Float64Array;
+  private readonly oldPoints: Float64Array;
+  /** Per old point: 1 once a new point took its impulses. */
+  private readonly oldTaken: Uint8Array;
   /** Box–box manifolds kept while the two boxes hardly move relative to each other. */
   private readonly cache: ManifoldCache;
   /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
@@ -114,6 +117,8 @@ export class ContactSet {
     this.oldNormal = new Float64Array(this.pointCapacity);
     this.oldTangent = new Float64Array(this.pointCapacity * n);
     this.oldApproach = new Float64Array(this.pointCapacity);
+    this.oldPoints = new Float64Array(this.pointCapacity * n);
+    this.oldTaken = new Uint8Array(this.pointCapacity);
     this.cache = new ManifoldCache(n, this.pointCapacity);
     this.ensureSlots(16);
   }
@@ -249,9 +254,19 @@ export class ContactSet {
     this.count = o;
   }
 
+  /** Gives point index `ni` (slot·P + p) the impulses of old point `q`, which is then taken. */
+  private carryImpulses(ni: number, q: number): void {
+    const n = this.n;
+    this.oldTaken[q] = 1;
+    this.normalImpulse[ni] = this.oldNormal[q];
+    this.approachSpeed[ni] = this.oldApproach[q];
+    for (let c = 0; c < n; c += 1) this.tangentImpulse[ni * n + c] = this.oldTangent[q * n + c];
+  }
+
   /**
    * Refreshes the manifold of every contact with a moving body (awake dynamic or kinematic) and
-   * carries the impulses of points whose feature id survived. `params.contactMargin` is the margin;
+   * carries the impulses of points whose feature id survived; a point with a new id takes those of
+   * the nearest unclaimed old point within `params.contactMargin`. `params.contactMargin` is the margin;
    * `reach` adds the distance each body can close in one sub-step (speculative contacts), per
    * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
    * previous touching state in CONTACT_WAS_TOUCHING. Allocates nothing.
@@ -270,6 +285,8 @@ export class ContactSet {
     const oldNormal = this.oldNormal;
     const oldTangent = this.oldTangent;
     const oldApproach = this.oldApproach;
+    const oldPoints = this.oldPoints;
+    const oldTaken = this.oldTaken;
     const reuseTolerance = params.manifoldReuseTolerance;
     const reuseNumbers = this.reuseNumbers;
     reuseNumbers[0] = reuseTolerance;
@@ -337,7 +354,10 @@ export class ContactSet {
         oldIds[p] = m.ids[p];
         oldNormal[p] = this.normalImpulse[ni + p];
         oldApproach[p] = this.approachSpeed[ni + p];
-        for (let c = 0; c < n; c += 1) oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
+        for (let c = 0; c < n; c += 1) {
+          oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
+          oldPoints[p * n + c] = m.points[p * n + c];
+        }
       }
       scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
       collideScratch(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, scratch);
@@ -352,19 +372,48 @@ export class ContactSet {
       if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
       else this.cache.forget(slot);
       let touching = false;
+      oldTaken.fill(0, 0, oldCount);
+      let unmatched = 0;
       for (let p = 0; p < m.count; p += 1) {
         if (m.separations[p] < margin) touching = true;
         const id = m.ids[p];
         let q = 0;
         while (q < oldCount && oldIds[q] !== id) q += 1;
-        if (q < oldCount) {
-          this.normalImpulse[ni + p] = oldNormal[q];
-          this.approachSpeed[ni + p] = oldApproach[q];
-          for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = oldTangent[q * n + c];
-        } else {
-          this.normalImpulse[ni + p] = 0;
-          this.approachSpeed[ni + p] = 0;
-          for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = 0;
+        if (q < oldCount) this.carryImpulses(ni + p, q);
+        else unmatched += 1;
+      }
+      if (unmatched > 0) {
+        // A point whose id is new takes the impulses of the nearest unclaimed old point within
+        // the margin: where two edges coincide (boxes flush side by side, as in a pyramid) the
+        // same corner of the contact region is named by one feature pair or another from one
+        // sub-step to the next, and without this its load would restart from zero.
+        const reach2 = margin * margin;
+        const pts = m.points;
+        for (let p = 0; p < m.count; p += 1) {
+          const id = m.ids[p];
+          let q = 0;
+          while (q < oldCount && oldIds[q] !== id) q += 1;
+          if (q < oldCount) continue; // matched by id above (ids are unique in a manifold)
+          let best = -1;
+          let bestD2 = reach2;
+          for (q = 0; q < oldCount; q += 1) {
+            if (oldTaken[q]) continue;
+            let d2 = 0;
+            for (let c = 0; c < n; c += 1) {
+              const dc = pts[p * n + c] - oldPoints[q * n + c];
+              d2 += dc * dc;
+            }
+            if (d2 <= bestD2) {
+              bestD2 = d2;
+              best = q;
+            }
+          }
+          if (best >= 0) this.carryImpulses(ni + p, best);
+          else {
+            this.normalImpulse[ni + p] = 0;
+            this.approachSpeed[ni + p] = 0;
+            for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = 0;
+          }
         }
       }
       flags |= CONTACT_ACTIVE;

@@ -35,6 +35,7 @@ const table: Record<string, number | boolean> = {
   linearDamping: 0,
   angularDamping: 0,
   manifoldReuseTolerance: 1e-4,
+  solverTolerance: 1e-9,
 };
 
 describe('defaultParams', () => {
@@ -96,6 +97,8 @@ describe('validateParams', () => {
     ['angularDamping', Infinity, 'RangeError'],
     ['manifoldReuseTolerance', -1e-4, 'RangeError'],
     ['manifoldReuseTolerance', '1e-4', 'TypeError'],
+    ['solverTolerance', -1e-9, 'RangeError'],
+    ['solverTolerance', Number.NaN, 'RangeError'],
   ];
   for (const [name, value, kind] of bad) {
     it(`${name} = ${String(value)} throws a ${kind} naming '${name}'`, () => {

@@ -11,7 +11,7 @@
 /**
  * The engine's parameters. Units: seconds (s), metres (m), radians (rad), hertz (Hz); counts are
  * integers. Names and defaults follow the specification's tolerance table; `linearDamping` and
- * `angularDamping` are additions (default 0: no damping), and so is `manifoldReuseTolerance`.
+ * `angularDamping` are additions (default 0: no damping), and so are `manifoldReuseTolerance` and `solverTolerance`.
  */
 export interface Params {
   /** Length of one step of a fixed-rate loop (s). A helper for callers: `World.step(dt)` takes its own dt. */
@@ -94,6 +94,14 @@ export interface Params {
    * reuse"). 0 computes every box–box manifold every sub-step.
    */
   readonly manifoldReuseTolerance: number;
+  /**
+   * Convergence tolerance of the contact solver (m/s, >= 0): when a whole pass changes no contact
+   * row's velocity by more than this, the passes left of `iterations` (and of `shockIterations`)
+   * are skipped, since they would change the velocities by less still; the inner sweeps of a
+   * shock pass stop the same way. 0 skips only passes that would change nothing at all. See
+   * docs/solver.md, "Early exit".
+   */
+  readonly solverTolerance: number;
 }
 
 /** The defaults of every parameter (frozen). */
@@ -126,6 +134,7 @@ export const defaultParams: Readonly<Params> = Object.freeze({
   linearDamping: 0,
   angularDamping: 0,
   manifoldReuseTolerance: 1e-4,
+  solverTolerance: 1e-9,
 });
 
 /** Upper bound of the integer counts (sub-steps, iterations): a guard against typos such as 1e9. */
@@ -172,6 +181,7 @@ const rules: { readonly [K in keyof Params]: Rule } = {
   linearDamping: nonNegative,
   angularDamping: nonNegative,
   manifoldReuseTolerance: nonNegative,
+  solverTolerance: nonNegative,
 };
 
 /** The names of every parameter, in the order of the specification's table. */

@@ -39,7 +39,11 @@ const SOLVE_SLOP = 2;
 const SOLVE_THRESHOLD = 3;
 /** The impulse handed to `apply` (through the array: a double argument would be boxed). */
 const SOLVE_LAMBDA = 4;
-/** Inner sweeps over one manifold in a shock pass. */
+/** `solverTolerance` (m/s): a pass or inner sweep that changes no row's velocity more ends early. */
+const SOLVE_TOLERANCE = 5;
+/** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
+const SOLVE_CHANGE = 6;
+/** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
 const SHOCK_INNER_SWEEPS = 4;
 
 /** Sequential-impulse solver of the contacts of one world. */
@@ -83,7 +87,7 @@ export class ContactSolver {
   private lambdaT: Float64Array;
   private maxLambda = new Float64Array(16);
 
-  private readonly constants = new Float64Array(5);
+  private readonly constants = new Float64Array(7);
   private readonly tangents: Float64Array;
   private readonly tmp: Float64Array;
   private readonly rA: Float64Array;
@@ -102,6 +106,9 @@ export class ContactSolver {
     this.rA = new Float64Array(D.n);
     this.rB = new Float64Array(D.n);
   }
+
+  /** Normal passes the last `solve` ran (at most `iterations`; see `Params.solverTolerance`). @internal */
+  passesRun = 0;
 
   /** Count of contact points in the last sub-step's solve. */
   get pointCount(): number {
@@ -145,6 +152,7 @@ export class ContactSolver {
     c[SOLVE_BIAS] = p.biasFactor / h;
     c[SOLVE_SLOP] = p.penetrationSlop;
     c[SOLVE_THRESHOLD] = p.restitutionThreshold;
+    c[SOLVE_TOLERANCE] = p.solverTolerance;
     const warm = p.useWarmStart;
     const maxPoints = p.maxContacts;
     const P = contacts.pointCapacity;
@@ -467,19 +475,27 @@ export class ContactSolver {
    * One Gauss–Seidel pass over the manifolds (friction, then normal). With `shock`, manifolds go
    * in layer order and the lower body of each contact between layers receives no impulse.
    */
-  private pass(sb: SolverBodies, shock: boolean): void {
+  private pass(sb: SolverBodies, shock: boolean): boolean {
     // A shock pass settles each manifold against its frozen lower body with a few inner sweeps:
     // the block is then solved whole, so its points share the load evenly and the upper body
-    // gets no spurious spin from the order the points are visited in.
+    // gets no spurious spin from the order the points are visited in. A sweep that changed no
+    // row's velocity by more than the tolerance ends them: the next would change less.
+    const c = this.constants;
+    const tolerance = c[SOLVE_TOLERANCE];
     const inner = shock ? SHOCK_INNER_SWEEPS : 1;
+    let converged = true;
     for (let o = 0; o < this.mfCount; o += 1) {
       const mf = shock ? this.shockOrder[o] : o;
       for (let sweep = 0; sweep < inner; sweep += 1) {
+        c[SOLVE_CHANGE] = 0;
         if (this.writtenOut && this.n === 3) this.solveManifold3(sb, mf, shock);
         else if (this.writtenOut && this.n === 4) this.solveManifold4(sb, mf, shock);
         else this.solveManifold(sb, mf, shock, 1);
+        if (c[SOLVE_CHANGE] <= tolerance) break;
+        converged = false;
       }
     }
+    return converged;
   }
 
   /**
@@ -521,6 +537,7 @@ export class ContactSolver {
     const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
     const tmp = this.tmp;
+    let change = 0;
     if (mu > 0) {
       for (let cp = first; cp < last; cp += 1) {
         const maxT = mu * lambdaN[cp];
@@ -542,6 +559,8 @@ export class ContactSolver {
           lambdaT[cp * m + t] = nl;
           if (dl === 0) continue;
           const rb = (cp * (m + 1) + t + 1) * RS;
+          const moved = Math.abs(dl) * (fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1]);
+          if (moved > change) change = moved;
           const la = ima * dl;
           const lb = imb * dl;
           for (let d = 0; d < n; d += 1) {
@@ -572,6 +591,8 @@ export class ContactSolver {
         if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
         const dl = nl - old;
         if (dl === 0) continue;
+        const moved = Math.abs(dl) * K;
+        if (moved > change) change = moved;
         const la = ima * dl;
         const lb = imb * dl;
         for (let d = 0; d < n; d += 1) {
@@ -587,6 +608,7 @@ export class ContactSolver {
         }
       }
     }
+    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
   /**
@@ -621,6 +643,7 @@ export class ContactSolver {
     const last = first + this.mfPoints[mf];
     const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
+    let change = 0;
     if (mu > 0) {
       for (let cp = first; cp < last; cp += 1) {
         const maxT = mu * lambdaN[cp];
@@ -652,6 +675,8 @@ export class ContactSolver {
         const d2 = n2 - o2;
         // Applied one row after the other, as the general loop does.
         if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
           vax -= la * rows[r1]; vbx += lb * rows[r1];
@@ -664,6 +689,8 @@ export class ContactSolver {
           wa2 -= ga * rows[r1 + 11]; wb2 += gb * rows[r1 + 14];
         }
         if (d2 !== 0) {
+          const moved = Math.abs(d2) * K2;
+          if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
           vax -= la * rows[r2]; vbx += lb * rows[r2];
@@ -691,6 +718,8 @@ export class ContactSolver {
       if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
+      const moved = Math.abs(dl) * K;
+      if (moved > change) change = moved;
       const la = ima * dl;
       const lb = imb * dl;
       vax -= la * rows[rb]; vbx += lb * rows[rb];
@@ -707,6 +736,7 @@ export class ContactSolver {
     W[va] = wa0; W[va + 1] = wa1; W[va + 2] = wa2;
     V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz;
     W[vb] = wb0; W[vb + 1] = wb1; W[vb + 2] = wb2;
+    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
   /**
@@ -744,6 +774,7 @@ export class ContactSolver {
     const last = first + this.mfPoints[mf];
     const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
+    let change = 0;
     if (mu > 0) {
       for (let cp = first; cp < last; cp += 1) {
         const maxT = mu * lambdaN[cp];
@@ -807,6 +838,8 @@ export class ContactSolver {
         const d3 = n3 - o3;
         // Applied one row after the other, as the general loop does.
         if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
           vax -= la * rows[r1]; vbx += lb * rows[r1];
@@ -823,6 +856,8 @@ export class ContactSolver {
           wa5 -= ga * rows[r1 + 21]; wb5 += gb * rows[r1 + 27];
         }
         if (d2 !== 0) {
+          const moved = Math.abs(d2) * K2;
+          if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
           vax -= la * rows[r2]; vbx += lb * rows[r2];
@@ -839,6 +874,8 @@ export class ContactSolver {
           wa5 -= ga * rows[r2 + 21]; wb5 += gb * rows[r2 + 27];
         }
         if (d3 !== 0) {
+          const moved = Math.abs(d3) * K3;
+          if (moved > change) change = moved;
           const la = ima * d3;
           const lb = imb * d3;
           vax -= la * rows[r3]; vbx += lb * rows[r3];
@@ -877,6 +914,8 @@ export class ContactSolver {
       if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
+      const moved = Math.abs(dl) * K;
+      if (moved > change) change = moved;
       const la = ima * dl;
       const lb = imb * dl;
       vax -= la * rows[rb]; vbx += lb * rows[rb];
@@ -897,12 +936,23 @@ export class ContactSolver {
     W[wa] = wa0; W[wa + 1] = wa1; W[wa + 2] = wa2; W[wa + 3] = wa3; W[wa + 4] = wa4; W[wa + 5] = wa5;
     V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz; V[vb + 3] = vbw;
     W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2; W[wb + 3] = wb3; W[wb + 4] = wb4; W[wb + 5] = wb5;
+    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
 
-  /** `iterations` Gauss–Seidel passes over every manifold. */
-  solve(sb: SolverBodies, iterations: number): void {
-    for (let it = 0; it < iterations; it += 1) this.pass(sb, false);
+  /**
+   * `iterations` Gauss–Seidel passes over every manifold, fewer when a pass changes no row's
+   * velocity by more than `solverTolerance`: the state is then a fixed point of the passes (to
+   * the tolerance), and the passes left would not move it. Returns the passes run.
+   */
+  solve(sb: SolverBodies, iterations: number): number {
+    let it = 0;
+    while (it < iterations) {
+      it += 1;
+      if (this.pass(sb, false)) break;
+    }
+    this.passesRun = it;
+    return it;
   }
 
   /** One Gauss–Seidel pass over every manifold (the world interleaves it with the joints). */
@@ -951,7 +1001,7 @@ export class ContactSolver {
       const layer = Math.min(depth[this.mfA[mf]], depth[this.mfB[mf]]) + 1;
       this.shockOrder[cnt[layer]++] = mf;
     }
-    for (let it = 0; it < passes; it += 1) this.pass(sb, true);
+    for (let it = 0; it < passes; it += 1) if (this.pass(sb, true)) return;
   }
 
   /**

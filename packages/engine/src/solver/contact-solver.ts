@@ -212,6 +212,9 @@ export class ContactSolver {
       const IA = a * k * k;
       const IB = b * k * k;
       const IW = sb.invInertia;
+      // s ≥ 0 when the body's I⁻¹ is s·identity (then I⁻¹J = s·J), else −1 (see SolverBodies).
+      const isoA = sb.isoInvInertia[a];
+      const isoB = sb.isoInvInertia[b];
       const V = sb.v;
       const W = sb.w;
       for (let q = 0; q < count; q += 1) {
@@ -246,20 +249,20 @@ export class ContactSolver {
             rows[base + 8] = jb2;
             let KA = imA;
             let KB = imB;
-            const sa0 = 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
-            const sb0 = 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
+            const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
+            const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
             rows[base + 9] = sa0;
             rows[base + 12] = sb0;
             KA += sa0 * ja0;
             KB += sb0 * jb0;
-            const sa1 = 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
-            const sb1 = 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
+            const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
+            const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
             rows[base + 10] = sa1;
             rows[base + 13] = sb1;
             KA += sa1 * ja1;
             KB += sb1 * jb1;
-            const sa2 = 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
-            const sb2 = 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
+            const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
+            const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
             rows[base + 11] = sa2;
             rows[base + 14] = sb2;
             KA += sa2 * ja2;
@@ -300,38 +303,38 @@ export class ContactSolver {
             rows[base + 15] = jb5;
             let KA = imA;
             let KB = imB;
-            const sa0 = 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
-            const sb0 = 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
+            const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
+            const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
             rows[base + 16] = sa0;
             rows[base + 22] = sb0;
             KA += sa0 * ja0;
             KB += sb0 * jb0;
-            const sa1 = 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
-            const sb1 = 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
+            const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
+            const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
             rows[base + 17] = sa1;
             rows[base + 23] = sb1;
             KA += sa1 * ja1;
             KB += sb1 * jb1;
-            const sa2 = 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
-            const sb2 = 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
+            const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
+            const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
             rows[base + 18] = sa2;
             rows[base + 24] = sb2;
             KA += sa2 * ja2;
             KB += sb2 * jb2;
-            const sa3 = 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
-            const sb3 = 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
+            const sa3 = isoA >= 0 ? isoA * ja3 : 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
+            const sb3 = isoB >= 0 ? isoB * jb3 : 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
             rows[base + 19] = sa3;
             rows[base + 25] = sb3;
             KA += sa3 * ja3;
             KB += sb3 * jb3;
-            const sa4 = 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
-            const sb4 = 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
+            const sa4 = isoA >= 0 ? isoA * ja4 : 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
+            const sb4 = isoB >= 0 ? isoB * jb4 : 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
             rows[base + 20] = sa4;
             rows[base + 26] = sb4;
             KA += sa4 * ja4;
             KB += sb4 * jb4;
-            const sa5 = 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
-            const sb5 = 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
+            const sa5 = isoA >= 0 ? isoA * ja5 : 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
+            const sb5 = isoB >= 0 ? isoB * jb5 : 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
             rows[base + 21] = sa5;
             rows[base + 27] = sb5;
             KA += sa5 * ja5;
@@ -357,10 +360,10 @@ export class ContactSolver {
             for (let row = 0; row < k; row += 1) {
               let sa = 0;
               let sbv = 0;
-              for (let col = 0; col < k; col += 1) {
-                sa += IW[IA + row * k + col] * rows[base + n + col];
-                sbv += IW[IB + row * k + col] * rows[base + n + k + col];
-              }
+              if (isoA >= 0) sa = isoA * rows[base + n + row];
+              else for (let col = 0; col < k; col += 1) sa += IW[IA + row * k + col] * rows[base + n + col];
+              if (isoB >= 0) sbv = isoB * rows[base + n + k + row];
+              else for (let col = 0; col < k; col += 1) sbv += IW[IB + row * k + col] * rows[base + n + k + col];
               rows[base + n + 2 * k + row] = sa;
               rows[base + n + 3 * k + row] = sbv;
               KA += sa * rows[base + n + row];
@@ -431,26 +434,43 @@ export class ContactSolver {
     }
   }
 
-  /** Applies the warm-start impulses (normal and friction) of every point. */
+  /**
+   * Applies the warm-start impulses (normal and friction) of every point: the arithmetic of
+   * `apply` with both bodies receiving, written inline (one call per sub-step, not per row).
+   */
   warmStart(sb: SolverBodies): void {
-    const { m, RS } = this;
+    const { n, k, m, RS } = this;
+    const rows = this.rows;
+    const V = sb.v;
+    const W = sb.w;
+    const iA = n + 2 * k;
+    const iB = n + 3 * k;
     for (let mf = 0; mf < this.mfCount; mf += 1) {
       const a = this.mfA[mf];
       const b = this.mfB[mf];
+      const ima = sb.invMass[a];
+      const imb = sb.invMass[b];
+      const va = a * n;
+      const vb = b * n;
+      const wa = a * k;
+      const wb = b * k;
       const first = this.mfFirst[mf];
       const last = first + this.mfPoints[mf];
       for (let cp = first; cp < last; cp += 1) {
-        const base = cp * (m + 1) * RS;
-        const ln = this.lambdaN[cp];
-        if (ln !== 0) {
-          this.constants[SOLVE_LAMBDA] = ln;
-          this.apply(sb, base, a, b, 1, 1);
-        }
-        for (let t = 0; t < m; t += 1) {
-          const lt = this.lambdaT[cp * m + t];
-          if (lt !== 0) {
-            this.constants[SOLVE_LAMBDA] = lt;
-            this.apply(sb, base + (t + 1) * RS, a, b, 1, 1);
+        for (let r = 0; r <= m; r += 1) {
+          const lambda = r === 0 ? this.lambdaN[cp] : this.lambdaT[cp * m + r - 1];
+          if (lambda === 0) continue;
+          const base = (cp * (m + 1) + r) * RS;
+          const la = lambda * ima;
+          const lb = lambda * imb;
+          for (let d = 0; d < n; d += 1) {
+            const dir = rows[base + d];
+            V[va + d] -= la * dir;
+            V[vb + d] += lb * dir;
+          }
+          for (let pl = 0; pl < k; pl += 1) {
+            W[wa + pl] -= lambda * rows[base + iA + pl];
+            W[wb + pl] += lambda * rows[base + iB + pl];
           }
         }
       }

@@ -38,6 +38,12 @@ export class SolverBodies {
   invInertia: Float64Array;
   /** World inertia, k×k row-major per slot (dynamic bodies only). */
   inertia: Float64Array;
+  /**
+   * Per slot: s when I_world⁻¹ = s·identity (a body whose inertia is the same in every plane: a
+   * hypercube, a hypersphere; also 0 for slot 0 and kinematic bodies), −1 otherwise. Such a body's
+   * I⁻¹J is s·J whatever its rotation: k products instead of k² per row.
+   */
+  isoInvInertia: Float64Array;
   /** Shock-propagation layer per slot (0 for immovable and kinematic slots). */
   depth: Int32Array;
 
@@ -52,6 +58,7 @@ export class SolverBodies {
     this.invMass = new Float64Array(16);
     this.invInertia = new Float64Array(16 * D.k * D.k);
     this.inertia = new Float64Array(16 * D.k * D.k);
+    this.isoInvInertia = new Float64Array(16);
     this.depth = new Int32Array(16);
     this.rot = new Float64Array(D.k * D.k);
   }
@@ -89,6 +96,7 @@ export class SolverBodies {
     } else {
       this.invMass[s] = 0;
       this.invInertia.fill(0, s * kk, s * kk + kk);
+      this.isoInvInertia[s] = 0;
     }
     this.depth[s] = body.motion === MOTION_DYNAMIC ? -1 : 0;
     return s;
@@ -100,6 +108,7 @@ export class SolverBodies {
     this.w = growFloat64(this.w, need * k);
     this.w0 = growFloat64(this.w0, need * k);
     this.invMass = growFloat64(this.invMass, need);
+    this.isoInvInertia = growFloat64(this.isoInvInertia, need);
     this.invInertia = growFloat64(this.invInertia, need * k * k);
     this.inertia = growFloat64(this.inertia, need * k * k);
     this.depth = growInt32(this.depth, need);
@@ -112,6 +121,25 @@ export class SolverBodies {
    */
   private worldInverseInertia(body: Body, at: number): void {
     const { n, k, planeI, planeJ } = this.D;
+    const inv = body.invInertia;
+    const I = body.inertia;
+    const out = this.invInertia;
+    const outI = this.inertia;
+    const slot = at / (k * k);
+    let iso = true;
+    for (let q = 1; q < k; q += 1) if (inv[q] !== inv[0] || I[q] !== I[0]) iso = false;
+    if (iso) {
+      // Q diag(s) Qᵀ = s·QQᵀ = s·identity: no rotation needed.
+      out.fill(0, at, at + k * k);
+      outI.fill(0, at, at + k * k);
+      for (let r = 0; r < k; r += 1) {
+        out[at + r * k + r] = inv[0];
+        outI[at + r * k + r] = I[0];
+      }
+      this.isoInvInertia[slot] = inv[0];
+      return;
+    }
+    this.isoInvInertia[slot] = -1;
     const M = body.pose!.M;
     const Q = this.rot;
     for (let col = 0; col < k; col += 1) {
@@ -123,10 +151,6 @@ export class SolverBodies {
         Q[row * k + col] = M[a * n + i] * M[b * n + j] - M[b * n + i] * M[a * n + j];
       }
     }
-    const inv = body.invInertia;
-    const I = body.inertia;
-    const out = this.invInertia;
-    const outI = this.inertia;
     for (let r = 0; r < k; r += 1) {
       for (let c = r; c < k; c += 1) {
         let s = 0;

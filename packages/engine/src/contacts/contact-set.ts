@@ -81,8 +81,15 @@ export class ContactSet {
    * bounces from that speed: the stop itself leaves almost no approach speed to bounce from.
    */
   approachSpeed: Float64Array;
-  /** Accumulated friction impulse per manifold point as a world vector (N·s), n per point. */
-  tangentImpulse: Float64Array;
+  /**
+   * Accumulated friction impulse of each slot's patch (see ContactSolver) as a world vector (N·s),
+   * n per slot; it survives a change of tangent basis and of the manifold's points.
+   */
+  patchTangent: Float64Array;
+  /** Accumulated twist friction impulse of each slot's patch as a world bivector (N·m·s), k per slot. */
+  patchTwist: Float64Array;
+  /** Bivector components per slot: n(n−1)/2. */
+  private readonly k: number;
   /** Mixed friction coefficient of each slot. */
   friction: Float64Array = new Float64Array(16);
   /** Mixed restitution of each slot. */
@@ -97,7 +104,6 @@ export class ContactSet {
   /** Scratch of the id matching: the previous ids, impulses and friction vectors of one manifold. */
   private readonly oldIds: Uint32Array;
   private readonly oldNormal: Float64Array;
-  private readonly oldTangent: Float64Array;
   private readonly oldApproach: Float64Array;
   private readonly oldPoints: Float64Array;
   /** Per old point: 1 once a new point took its impulses. */
@@ -112,10 +118,11 @@ export class ContactSet {
     this.pointCapacity = maxManifoldPoints(n);
     this.normalImpulse = new Float64Array(16 * this.pointCapacity);
     this.approachSpeed = new Float64Array(16 * this.pointCapacity);
-    this.tangentImpulse = new Float64Array(16 * this.pointCapacity * n);
+    this.k = (n * (n - 1)) / 2;
+    this.patchTangent = new Float64Array(16 * n);
+    this.patchTwist = new Float64Array(16 * this.k);
     this.oldIds = new Uint32Array(this.pointCapacity);
     this.oldNormal = new Float64Array(this.pointCapacity);
-    this.oldTangent = new Float64Array(this.pointCapacity * n);
     this.oldApproach = new Float64Array(this.pointCapacity);
     this.oldPoints = new Float64Array(this.pointCapacity * n);
     this.oldTaken = new Uint8Array(this.pointCapacity);
@@ -133,7 +140,8 @@ export class ContactSet {
     this.restitution = growFloat64(this.restitution, cap);
     this.normalImpulse = growFloat64(this.normalImpulse, cap * P);
     this.approachSpeed = growFloat64(this.approachSpeed, cap * P);
-    this.tangentImpulse = growFloat64(this.tangentImpulse, cap * P * this.n);
+    this.patchTangent = growFloat64(this.patchTangent, cap * this.n);
+    this.patchTwist = growFloat64(this.patchTwist, cap * this.k);
     const flags = new Uint8Array(cap);
     flags.set(this.flags.subarray(0, Math.min(this.flags.length, cap)));
     this.flags = flags;
@@ -220,7 +228,7 @@ export class ContactSet {
         this.flags[slot] = 0;
         this.normalImpulse.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
         this.approachSpeed.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
-        this.tangentImpulse.fill(0, slot * this.pointCapacity * this.n, (slot + 1) * this.pointCapacity * this.n);
+        this.clearPatch(slot);
         // Mixing: geometric mean of friction, the larger restitution (Box2D's rules).
         this.friction[slot] = Math.sqrt(A.material.friction * B.material.friction);
         this.restitution[slot] = Math.max(A.material.restitution, B.material.restitution);
@@ -254,13 +262,17 @@ export class ContactSet {
     this.count = o;
   }
 
+  /** Forgets the friction patch of `slot` (a new contact, or one whose points all changed). */
+  private clearPatch(slot: number): void {
+    this.patchTangent.fill(0, slot * this.n, (slot + 1) * this.n);
+    this.patchTwist.fill(0, slot * this.k, (slot + 1) * this.k);
+  }
+
   /** Gives point index `ni` (slot·P + p) the impulses of old point `q`, which is then taken. */
   private carryImpulses(ni: number, q: number): void {
-    const n = this.n;
     this.oldTaken[q] = 1;
     this.normalImpulse[ni] = this.oldNormal[q];
     this.approachSpeed[ni] = this.oldApproach[q];
-    for (let c = 0; c < n; c += 1) this.tangentImpulse[ni * n + c] = this.oldTangent[q * n + c];
   }
 
   /**
@@ -283,7 +295,6 @@ export class ContactSet {
     const P = this.pointCapacity;
     const oldIds = this.oldIds;
     const oldNormal = this.oldNormal;
-    const oldTangent = this.oldTangent;
     const oldApproach = this.oldApproach;
     const oldPoints = this.oldPoints;
     const oldTaken = this.oldTaken;
@@ -349,15 +360,11 @@ export class ContactSet {
       // here: a pair found apart or a reused manifold needs none).
       const oldCount = m.count;
       const ni = slot * P;
-      const ti = ni * n;
       for (let p = 0; p < oldCount; p += 1) {
         oldIds[p] = m.ids[p];
         oldNormal[p] = this.normalImpulse[ni + p];
         oldApproach[p] = this.approachSpeed[ni + p];
-        for (let c = 0; c < n; c += 1) {
-          oldTangent[p * n + c] = this.tangentImpulse[ti + p * n + c];
-          oldPoints[p * n + c] = m.points[p * n + c];
-        }
+        for (let c = 0; c < n; c += 1) oldPoints[p * n + c] = m.points[p * n + c];
       }
       scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
       collideScratch(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, scratch);
@@ -412,10 +419,14 @@ export class ContactSet {
           else {
             this.normalImpulse[ni + p] = 0;
             this.approachSpeed[ni + p] = 0;
-            for (let c = 0; c < n; c += 1) this.tangentImpulse[ti + p * n + c] = 0;
           }
         }
       }
+      // The friction patch belongs to the pair, not to a point: it stays while any point carried
+      // over, and starts from zero when none did (a new contact, or a jump to another face).
+      let carried = false;
+      for (let q = 0; q < oldCount; q += 1) if (oldTaken[q]) carried = true;
+      if (!carried) this.clearPatch(slot);
       flags |= CONTACT_ACTIVE;
       if (touching) flags |= CONTACT_TOUCHING;
       this.flags[slot] = flags;

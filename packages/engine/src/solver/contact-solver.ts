@@ -1,20 +1,23 @@
 /**
  * The contact solver: sequential impulses on the manifolds of one sub-step, in n dimensions.
  *
- * Each manifold point gives n rows: one along the normal (a non-negative impulse) and n − 1
- * friction rows spanning the tangent space. The friction impulses of a point are solved together
- * and their vector is clamped to the disc |P_t| <= μ λ_n (a circular cone in any n; a box cone
- * would favour the tangent axes). A row along the unit direction d at arms r_A, r_B has the
- * angular Jacobians J = r ∧ d (bivectors), the effective mass
+ * Each manifold point gives one row along the normal (a non-negative impulse). Friction is one
+ * patch per manifold (PhysX's patch friction, Box2D v2's friction anchor): n − 1 tangent rows at
+ * the centroid c of the manifold's points, and (n−1)(n−2)/2 twist rows, one per plane of the
+ * tangent space, that resist spinning about the normal. The tangent impulse vector is clamped to
+ * the disc |P_t| <= μ Σλ_n (a circular cone in any n) and the twist bivector to
+ * |P_w| <= μ Σλ_n·R, R the mean distance of the points from c. A row along the unit direction d
+ * at arms r_A, r_B has the angular Jacobians J = r ∧ d (bivectors), the effective mass
  * 1 / (1/m_A + 1/m_B + J_A·I_A⁻¹J_A + J_B·I_B⁻¹J_B), and an impulse λ changes
- * v_B += λ d/m_B, ω_B += λ I_B⁻¹J_B (the opposite for A); the momentum follows at the end as
- * L_B += I_B Δω_B = Σ λ J_B.
+ * v_B += λ d/m_B, ω_B += λ I_B⁻¹J_B (the opposite for A); a twist row has no linear part and
+ * J_A = J_B = t_i ∧ t_j. The momentum follows at the end as L_B += I_B Δω_B = Σ λ J_B.
  *
  * The pass order, Box2D's with Guendelman's shock propagation:
  * 1. prepare: rows, effective masses, the normal velocity before the solve, the velocity target of
  *    each point (Baumgarte for overlap beyond `penetrationSlop`, the speculative s/h for a gap);
- * 2. warm start: the impulses of the last sub-step, matched by feature id, applied again;
- * 3. `iterations` Gauss–Seidel passes: per manifold, friction then normal;
+ * 2. warm start: the impulses of the last sub-step (normal ones matched by feature id, the patch
+ *    kept per pair) applied again;
+ * 3. `iterations` Gauss–Seidel passes: per manifold, friction patch then normals;
  * 4. shock propagation (`shockIterations` passes, ground up): in a contact between layers, the
  *    lower body acts as infinitely heavy, so a stack cannot push its base down;
  * 5. restitution: touching points that approached faster than `restitutionThreshold` are given
@@ -51,8 +54,12 @@ export class ContactSolver {
   private readonly D: Dims;
   private readonly n: number;
   private readonly k: number;
-  /** Friction rows per point: n − 1. */
+  /** Tangent rows of a patch: n − 1. */
   private readonly m: number;
+  /** Twist rows of a patch: the planes of the tangent space, (n−1)(n−2)/2. */
+  private readonly q: number;
+  /** Rows of a patch: m + q. */
+  private readonly PR: number;
   /** Numbers per row: dir (n), J_A, J_B, I_A⁻¹J_A, I_B⁻¹J_B (k each), mass, K_A, K_B. */
   private readonly RS: number;
 
@@ -64,6 +71,9 @@ export class ContactSolver {
    */
   writtenOut = true;
 
+  /** Normal passes the last `solve` ran (at most `iterations`; see `Params.solverTolerance`). @internal */
+  passesRun = 0;
+
   /** Manifolds of this sub-step. */
   private mfCount = 0;
   private mfContact = new Int32Array(16);
@@ -73,18 +83,25 @@ export class ContactSolver {
   private mfPoints = new Int32Array(16);
   private mfFriction = new Float64Array(16);
   private mfRestitution = new Float64Array(16);
+  /** Twist radius R of each patch: the mean distance of its points from their centroid. */
+  private mfRadius = new Float64Array(16);
   /** Manifold order of the shock passes (lowest layer first). */
   private shockOrder = new Int32Array(16);
   private layerCount = new Int32Array(16);
+  /** The friction patch rows, PR per manifold. */
+  private patchRows: Float64Array;
+  /** Accumulated tangent impulses (m per manifold) and twist impulses (q per manifold). */
+  private lambdaP: Float64Array;
+  private lambdaW: Float64Array;
 
   /** Points of this sub-step. */
   private cpCount = 0;
+  /** The normal rows, one per point. */
   private rows: Float64Array;
   private target = new Float64Array(16);
   private vn0 = new Float64Array(16);
   private sep = new Float64Array(16);
   private lambdaN = new Float64Array(16);
-  private lambdaT: Float64Array;
   private maxLambda = new Float64Array(16);
 
   private readonly constants = new Float64Array(7);
@@ -92,23 +109,26 @@ export class ContactSolver {
   private readonly tmp: Float64Array;
   private readonly rA: Float64Array;
   private readonly rB: Float64Array;
+  private readonly centre: Float64Array;
 
   constructor(D: Dims) {
     this.D = D;
     this.n = D.n;
     this.k = D.k;
     this.m = D.n - 1;
+    this.q = ((D.n - 1) * (D.n - 2)) / 2;
+    this.PR = this.m + this.q;
     this.RS = D.n + 4 * D.k + 3;
-    this.rows = new Float64Array(16 * D.n * this.RS);
-    this.lambdaT = new Float64Array(16 * this.m);
+    this.rows = new Float64Array(16 * this.RS);
+    this.patchRows = new Float64Array(16 * this.PR * this.RS);
+    this.lambdaP = new Float64Array(16 * this.m);
+    this.lambdaW = new Float64Array(16 * Math.max(1, this.q));
     this.tangents = new Float64Array(this.m * D.n);
-    this.tmp = new Float64Array(this.m);
+    this.tmp = new Float64Array(Math.max(this.m, this.q, 1));
     this.rA = new Float64Array(D.n);
     this.rB = new Float64Array(D.n);
+    this.centre = new Float64Array(D.n);
   }
-
-  /** Normal passes the last `solve` ran (at most `iterations`; see `Params.solverTolerance`). @internal */
-  passesRun = 0;
 
   /** Count of contact points in the last sub-step's solve. */
   get pointCount(): number {
@@ -117,6 +137,7 @@ export class ContactSolver {
 
   private ensureManifolds(need: number): void {
     if (need <= this.mfContact.length) return;
+    const keep = this.mfCount;
     this.mfContact = growInt32(this.mfContact, need);
     this.mfA = growInt32(this.mfA, need);
     this.mfB = growInt32(this.mfB, need);
@@ -124,18 +145,21 @@ export class ContactSolver {
     this.mfPoints = growInt32(this.mfPoints, need);
     this.mfFriction = growFloat64(this.mfFriction, need);
     this.mfRestitution = growFloat64(this.mfRestitution, need);
+    this.mfRadius = growFloat64(this.mfRadius, need);
     this.shockOrder = growInt32(this.shockOrder, need);
+    this.patchRows = growFloat64(this.patchRows, need * this.PR * this.RS, keep * this.PR * this.RS);
+    this.lambdaP = growFloat64(this.lambdaP, need * this.m, keep * this.m);
+    this.lambdaW = growFloat64(this.lambdaW, need * Math.max(1, this.q), keep * this.q);
   }
 
   private ensurePoints(need: number): void {
     if (need <= this.target.length) return;
     const keep = this.cpCount;
-    this.rows = growFloat64(this.rows, need * this.n * this.RS, keep * this.n * this.RS);
+    this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);
     this.target = growFloat64(this.target, need, keep);
     this.vn0 = growFloat64(this.vn0, need, keep);
     this.sep = growFloat64(this.sep, need, keep);
     this.lambdaN = growFloat64(this.lambdaN, need, keep);
-    this.lambdaT = growFloat64(this.lambdaT, need * this.m, keep * this.m);
     this.maxLambda = growFloat64(this.maxLambda, need, keep);
   }
 
@@ -145,7 +169,7 @@ export class ContactSolver {
    * in. The sub-step h is read from `stepConstants[STEP_H]`. Returns the count of points.
    */
   prepare(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
-    const { n, k, m, RS } = this;
+    const { n, k, m, q, PR, RS } = this;
     const c = this.constants;
     const h = stepConstants[STEP_H];
     c[SOLVE_H] = h;
@@ -156,11 +180,10 @@ export class ContactSolver {
     const warm = p.useWarmStart;
     const maxPoints = p.maxContacts;
     const P = contacts.pointCapacity;
-    const planeI = this.D.planeI;
-    const planeJ = this.D.planeJ;
     const tangents = this.tangents;
     const rA = this.rA;
     const rB = this.rB;
+    const centre = this.centre;
     // The written-out rows of n = 3 and n = 4 (see writtenOut).
     const fast = this.writtenOut ? n : 0;
     this.mfCount = 0;
@@ -207,176 +230,21 @@ export class ContactSolver {
       }
       const xA = A.x;
       const xB = B.x;
-      const imA = sb.invMass[a];
-      const imB = sb.invMass[b];
-      const IA = a * k * k;
-      const IB = b * k * k;
-      const IW = sb.invInertia;
-      // s ≥ 0 when the body's I⁻¹ is s·identity (then I⁻¹J = s·J), else −1 (see SolverBodies).
-      const isoA = sb.isoInvInertia[a];
-      const isoB = sb.isoInvInertia[b];
       const V = sb.v;
       const W = sb.w;
-      for (let q = 0; q < count; q += 1) {
+      for (let d = 0; d < n; d += 1) centre[d] = 0;
+      for (let pq = 0; pq < count; pq += 1) {
         const cp = this.cpCount++;
         for (let d = 0; d < n; d += 1) {
-          const pd = man.points[q * n + d];
+          const pd = man.points[pq * n + d];
           rA[d] = pd - xA[d];
           rB[d] = pd - xB[d];
+          centre[d] += pd;
         }
-        for (let r = 0; r <= m; r += 1) {
-          const base = (cp * (m + 1) + r) * RS;
-          const dir = r === 0 ? N : tangents;
-          const off = r === 0 ? 0 : (r - 1) * n;
-          for (let d = 0; d < n; d += 1) rows[base + d] = dir[off + d];
-          if (fast === 3) {
-            // n = 3 written out (the same sums in the same order as the general loop below; each
-            // sum starts at `0 +` as the loop's does, so a −0 product still sums to +0).
-            const d0 = rows[base];
-            const d1 = rows[base + 1];
-            const d2 = rows[base + 2];
-            const ja0 = rA[0] * d1 - rA[1] * d0;
-            const jb0 = rB[0] * d1 - rB[1] * d0;
-            rows[base + 3] = ja0;
-            rows[base + 6] = jb0;
-            const ja1 = rA[0] * d2 - rA[2] * d0;
-            const jb1 = rB[0] * d2 - rB[2] * d0;
-            rows[base + 4] = ja1;
-            rows[base + 7] = jb1;
-            const ja2 = rA[1] * d2 - rA[2] * d1;
-            const jb2 = rB[1] * d2 - rB[2] * d1;
-            rows[base + 5] = ja2;
-            rows[base + 8] = jb2;
-            let KA = imA;
-            let KB = imB;
-            const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
-            const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
-            rows[base + 9] = sa0;
-            rows[base + 12] = sb0;
-            KA += sa0 * ja0;
-            KB += sb0 * jb0;
-            const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
-            const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
-            rows[base + 10] = sa1;
-            rows[base + 13] = sb1;
-            KA += sa1 * ja1;
-            KB += sb1 * jb1;
-            const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
-            const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
-            rows[base + 11] = sa2;
-            rows[base + 14] = sb2;
-            KA += sa2 * ja2;
-            KB += sb2 * jb2;
-            const K = KA + KB;
-            rows[base + 15] = K > 0 ? 1 / K : 0;
-            rows[base + 16] = KA;
-            rows[base + 17] = KB;
-          } else if (fast === 4) {
-            // n = 4 written out (the same sums in the same order as the general loop below).
-            const d0 = rows[base];
-            const d1 = rows[base + 1];
-            const d2 = rows[base + 2];
-            const d3 = rows[base + 3];
-            const ja0 = rA[0] * d1 - rA[1] * d0;
-            const jb0 = rB[0] * d1 - rB[1] * d0;
-            rows[base + 4] = ja0;
-            rows[base + 10] = jb0;
-            const ja1 = rA[0] * d2 - rA[2] * d0;
-            const jb1 = rB[0] * d2 - rB[2] * d0;
-            rows[base + 5] = ja1;
-            rows[base + 11] = jb1;
-            const ja2 = rA[0] * d3 - rA[3] * d0;
-            const jb2 = rB[0] * d3 - rB[3] * d0;
-            rows[base + 6] = ja2;
-            rows[base + 12] = jb2;
-            const ja3 = rA[1] * d2 - rA[2] * d1;
-            const jb3 = rB[1] * d2 - rB[2] * d1;
-            rows[base + 7] = ja3;
-            rows[base + 13] = jb3;
-            const ja4 = rA[1] * d3 - rA[3] * d1;
-            const jb4 = rB[1] * d3 - rB[3] * d1;
-            rows[base + 8] = ja4;
-            rows[base + 14] = jb4;
-            const ja5 = rA[2] * d3 - rA[3] * d2;
-            const jb5 = rB[2] * d3 - rB[3] * d2;
-            rows[base + 9] = ja5;
-            rows[base + 15] = jb5;
-            let KA = imA;
-            let KB = imB;
-            const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
-            const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
-            rows[base + 16] = sa0;
-            rows[base + 22] = sb0;
-            KA += sa0 * ja0;
-            KB += sb0 * jb0;
-            const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
-            const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
-            rows[base + 17] = sa1;
-            rows[base + 23] = sb1;
-            KA += sa1 * ja1;
-            KB += sb1 * jb1;
-            const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
-            const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
-            rows[base + 18] = sa2;
-            rows[base + 24] = sb2;
-            KA += sa2 * ja2;
-            KB += sb2 * jb2;
-            const sa3 = isoA >= 0 ? isoA * ja3 : 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
-            const sb3 = isoB >= 0 ? isoB * jb3 : 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
-            rows[base + 19] = sa3;
-            rows[base + 25] = sb3;
-            KA += sa3 * ja3;
-            KB += sb3 * jb3;
-            const sa4 = isoA >= 0 ? isoA * ja4 : 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
-            const sb4 = isoB >= 0 ? isoB * jb4 : 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
-            rows[base + 20] = sa4;
-            rows[base + 26] = sb4;
-            KA += sa4 * ja4;
-            KB += sb4 * jb4;
-            const sa5 = isoA >= 0 ? isoA * ja5 : 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
-            const sb5 = isoB >= 0 ? isoB * jb5 : 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
-            rows[base + 21] = sa5;
-            rows[base + 27] = sb5;
-            KA += sa5 * ja5;
-            KB += sb5 * jb5;
-            const K = KA + KB;
-            rows[base + 28] = K > 0 ? 1 / K : 0;
-            rows[base + 29] = KA;
-            rows[base + 30] = KB;
-
-          } else {
-            // J = r ∧ dir
-            for (let pl = 0; pl < k; pl += 1) {
-              const pi = planeI[pl];
-              const pj = planeJ[pl];
-              const di = rows[base + pi];
-              const dj = rows[base + pj];
-              rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
-              rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
-            }
-            // I⁻¹J and K = 1/m + J·I⁻¹J per body
-            let KA = imA;
-            let KB = imB;
-            for (let row = 0; row < k; row += 1) {
-              let sa = 0;
-              let sbv = 0;
-              if (isoA >= 0) sa = isoA * rows[base + n + row];
-              else for (let col = 0; col < k; col += 1) sa += IW[IA + row * k + col] * rows[base + n + col];
-              if (isoB >= 0) sbv = isoB * rows[base + n + k + row];
-              else for (let col = 0; col < k; col += 1) sbv += IW[IB + row * k + col] * rows[base + n + k + col];
-              rows[base + n + 2 * k + row] = sa;
-              rows[base + n + 3 * k + row] = sbv;
-              KA += sa * rows[base + n + row];
-              KB += sbv * rows[base + n + k + row];
-            }
-            const K = KA + KB;
-            rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
-            rows[base + n + 4 * k + 1] = KA;
-            rows[base + n + 4 * k + 2] = KB;
-          }
-        }
+        const base = cp * RS;
+        for (let d = 0; d < n; d += 1) rows[base + d] = N[d];
+        this.buildRow(rows, base, a, b, sb, fast);
         // Normal velocity before the solve, and the velocity target of the point.
-        const base = cp * (m + 1) * RS;
         let vn = 0;
         for (let d = 0; d < n; d += 1) vn += rows[base + d] * (V[b * n + d] - V[a * n + d]);
         for (let pl = 0; pl < k; pl += 1) {
@@ -384,27 +252,262 @@ export class ContactSolver {
         }
         // Restitution bounces from the faster of the approach now and the approach a speculative
         // contact stopped in the last sub-step (see ContactSet.approachSpeed).
-        this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + q]);
-        const s = man.separations[q];
+        this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + pq]);
+        const s = man.separations[pq];
         this.sep[cp] = s;
         this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
         this.maxLambda[cp] = 0;
-        const ni = slot * P + q;
-        if (warm) {
-          this.lambdaN[cp] = contacts.normalImpulse[ni];
-          const ti = ni * n;
-          for (let t = 0; t < m; t += 1) {
-            let s2 = 0;
-            for (let d = 0; d < n; d += 1) s2 += contacts.tangentImpulse[ti + d] * tangents[t * n + d];
-            this.lambdaT[cp * m + t] = s2;
-          }
-        } else {
-          this.lambdaN[cp] = 0;
-          for (let t = 0; t < m; t += 1) this.lambdaT[cp * m + t] = 0;
+        this.lambdaN[cp] = warm ? contacts.normalImpulse[slot * P + pq] : 0;
+      }
+      // The friction patch at the centroid of the points.
+      for (let d = 0; d < n; d += 1) centre[d] /= count;
+      let radius = 0;
+      for (let pq = 0; pq < count; pq += 1) {
+        let r2 = 0;
+        for (let d = 0; d < n; d += 1) {
+          const e = man.points[pq * n + d] - centre[d];
+          r2 += e * e;
+        }
+        radius += Math.sqrt(r2);
+      }
+      this.mfRadius[mf] = radius / count;
+      for (let d = 0; d < n; d += 1) {
+        rA[d] = centre[d] - xA[d];
+        rB[d] = centre[d] - xB[d];
+      }
+      const patch = this.patchRows;
+      const pb = mf * PR * RS;
+      const ti = slot * n;
+      for (let t = 0; t < m; t += 1) {
+        const base = pb + t * RS;
+        let s2 = 0;
+        for (let d = 0; d < n; d += 1) {
+          patch[base + d] = tangents[t * n + d];
+          s2 += contacts.patchTangent[ti + d] * tangents[t * n + d];
+        }
+        this.buildRow(patch, base, a, b, sb, fast);
+        this.lambdaP[mf * m + t] = warm ? s2 : 0;
+      }
+      const wi = slot * k;
+      for (let t1 = 0, w = 0; t1 < m; t1 += 1) {
+        for (let t2 = t1 + 1; t2 < m; t2 += 1, w += 1) {
+          const base = pb + (m + w) * RS;
+          this.buildTwistRow(patch, base, t1, t2, a, b, sb);
+          let s2 = 0;
+          for (let pl = 0; pl < k; pl += 1) s2 += contacts.patchTwist[wi + pl] * patch[base + n + pl];
+          this.lambdaW[mf * q + w] = warm ? s2 : 0;
         }
       }
     }
     return this.cpCount;
+  }
+
+  /**
+   * Fills row `base` of `rows` (its direction d already written) for the arms this.rA, this.rB
+   * between slots a and b: J = r ∧ d, I⁻¹J, the effective mass and the two inverse masses.
+   */
+  private buildRow(rows: Float64Array, base: number, a: number, b: number, sb: SolverBodies, fast: number): void {
+    const { n, k } = this;
+    const planeI = this.D.planeI;
+    const planeJ = this.D.planeJ;
+    const rA = this.rA;
+    const rB = this.rB;
+    const imA = sb.invMass[a];
+    const imB = sb.invMass[b];
+    const IA = a * k * k;
+    const IB = b * k * k;
+    const IW = sb.invInertia;
+    // s ≥ 0 when the body's I⁻¹ is s·identity (then I⁻¹J = s·J), else −1 (see SolverBodies).
+    const isoA = sb.isoInvInertia[a];
+    const isoB = sb.isoInvInertia[b];
+    if (fast === 3) {
+      // n = 3 written out (the same sums in the same order as the general loop below; each
+      // sum starts at `0 +` as the loop's does, so a −0 product still sums to +0).
+      const d0 = rows[base];
+      const d1 = rows[base + 1];
+      const d2 = rows[base + 2];
+      const ja0 = rA[0] * d1 - rA[1] * d0;
+      const jb0 = rB[0] * d1 - rB[1] * d0;
+      rows[base + 3] = ja0;
+      rows[base + 6] = jb0;
+      const ja1 = rA[0] * d2 - rA[2] * d0;
+      const jb1 = rB[0] * d2 - rB[2] * d0;
+      rows[base + 4] = ja1;
+      rows[base + 7] = jb1;
+      const ja2 = rA[1] * d2 - rA[2] * d1;
+      const jb2 = rB[1] * d2 - rB[2] * d1;
+      rows[base + 5] = ja2;
+      rows[base + 8] = jb2;
+      let KA = imA;
+      let KB = imB;
+      const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
+      const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
+      rows[base + 9] = sa0;
+      rows[base + 12] = sb0;
+      KA += sa0 * ja0;
+      KB += sb0 * jb0;
+      const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
+      const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
+      rows[base + 10] = sa1;
+      rows[base + 13] = sb1;
+      KA += sa1 * ja1;
+      KB += sb1 * jb1;
+      const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
+      const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
+      rows[base + 11] = sa2;
+      rows[base + 14] = sb2;
+      KA += sa2 * ja2;
+      KB += sb2 * jb2;
+      const K = KA + KB;
+      rows[base + 15] = K > 0 ? 1 / K : 0;
+      rows[base + 16] = KA;
+      rows[base + 17] = KB;
+    } else if (fast === 4) {
+      // n = 4 written out (the same sums in the same order as the general loop below).
+      const d0 = rows[base];
+      const d1 = rows[base + 1];
+      const d2 = rows[base + 2];
+      const d3 = rows[base + 3];
+      const ja0 = rA[0] * d1 - rA[1] * d0;
+      const jb0 = rB[0] * d1 - rB[1] * d0;
+      rows[base + 4] = ja0;
+      rows[base + 10] = jb0;
+      const ja1 = rA[0] * d2 - rA[2] * d0;
+      const jb1 = rB[0] * d2 - rB[2] * d0;
+      rows[base + 5] = ja1;
+      rows[base + 11] = jb1;
+      const ja2 = rA[0] * d3 - rA[3] * d0;
+      const jb2 = rB[0] * d3 - rB[3] * d0;
+      rows[base + 6] = ja2;
+      rows[base + 12] = jb2;
+      const ja3 = rA[1] * d2 - rA[2] * d1;
+      const jb3 = rB[1] * d2 - rB[2] * d1;
+      rows[base + 7] = ja3;
+      rows[base + 13] = jb3;
+      const ja4 = rA[1] * d3 - rA[3] * d1;
+      const jb4 = rB[1] * d3 - rB[3] * d1;
+      rows[base + 8] = ja4;
+      rows[base + 14] = jb4;
+      const ja5 = rA[2] * d3 - rA[3] * d2;
+      const jb5 = rB[2] * d3 - rB[3] * d2;
+      rows[base + 9] = ja5;
+      rows[base + 15] = jb5;
+      let KA = imA;
+      let KB = imB;
+      const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
+      const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
+      rows[base + 16] = sa0;
+      rows[base + 22] = sb0;
+      KA += sa0 * ja0;
+      KB += sb0 * jb0;
+      const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
+      const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
+      rows[base + 17] = sa1;
+      rows[base + 23] = sb1;
+      KA += sa1 * ja1;
+      KB += sb1 * jb1;
+      const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
+      const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
+      rows[base + 18] = sa2;
+      rows[base + 24] = sb2;
+      KA += sa2 * ja2;
+      KB += sb2 * jb2;
+      const sa3 = isoA >= 0 ? isoA * ja3 : 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
+      const sb3 = isoB >= 0 ? isoB * jb3 : 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
+      rows[base + 19] = sa3;
+      rows[base + 25] = sb3;
+      KA += sa3 * ja3;
+      KB += sb3 * jb3;
+      const sa4 = isoA >= 0 ? isoA * ja4 : 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
+      const sb4 = isoB >= 0 ? isoB * jb4 : 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
+      rows[base + 20] = sa4;
+      rows[base + 26] = sb4;
+      KA += sa4 * ja4;
+      KB += sb4 * jb4;
+      const sa5 = isoA >= 0 ? isoA * ja5 : 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
+      const sb5 = isoB >= 0 ? isoB * jb5 : 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
+      rows[base + 21] = sa5;
+      rows[base + 27] = sb5;
+      KA += sa5 * ja5;
+      KB += sb5 * jb5;
+      const K = KA + KB;
+      rows[base + 28] = K > 0 ? 1 / K : 0;
+      rows[base + 29] = KA;
+      rows[base + 30] = KB;
+
+    } else {
+      // J = r ∧ dir
+      for (let pl = 0; pl < k; pl += 1) {
+        const pi = planeI[pl];
+        const pj = planeJ[pl];
+        const di = rows[base + pi];
+        const dj = rows[base + pj];
+        rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
+        rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
+      }
+      // I⁻¹J and K = 1/m + J·I⁻¹J per body
+      let KA = imA;
+      let KB = imB;
+      for (let row = 0; row < k; row += 1) {
+        let sa = 0;
+        let sbv = 0;
+        if (isoA >= 0) sa = isoA * rows[base + n + row];
+        else for (let col = 0; col < k; col += 1) sa += IW[IA + row * k + col] * rows[base + n + col];
+        if (isoB >= 0) sbv = isoB * rows[base + n + k + row];
+        else for (let col = 0; col < k; col += 1) sbv += IW[IB + row * k + col] * rows[base + n + k + col];
+        rows[base + n + 2 * k + row] = sa;
+        rows[base + n + 3 * k + row] = sbv;
+        KA += sa * rows[base + n + row];
+        KB += sbv * rows[base + n + k + row];
+      }
+      const K = KA + KB;
+      rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
+      rows[base + n + 4 * k + 1] = KA;
+      rows[base + n + 4 * k + 2] = KB;
+    }
+  }
+
+  /**
+   * Fills the twist row `base` of `rows` for tangents t1 < t2: no linear part, J_A = J_B the unit
+   * bivector t1 ∧ t2, and K_A = J·I_A⁻¹J (no 1/m: a twist moves no centre of mass).
+   */
+  private buildTwistRow(rows: Float64Array, base: number, t1: number, t2: number, a: number, b: number, sb: SolverBodies): void {
+    const { n, k } = this;
+    const planeI = this.D.planeI;
+    const planeJ = this.D.planeJ;
+    const T = this.tangents;
+    const IA = a * k * k;
+    const IB = b * k * k;
+    const IW = sb.invInertia;
+    const isoA = sb.isoInvInertia[a];
+    const isoB = sb.isoInvInertia[b];
+    for (let d = 0; d < n; d += 1) rows[base + d] = 0;
+    for (let pl = 0; pl < k; pl += 1) {
+      const i = planeI[pl];
+      const j = planeJ[pl];
+      const e = T[t1 * n + i] * T[t2 * n + j] - T[t1 * n + j] * T[t2 * n + i];
+      rows[base + n + pl] = e;
+      rows[base + n + k + pl] = e;
+    }
+    let KA = 0;
+    let KB = 0;
+    for (let row = 0; row < k; row += 1) {
+      const e = rows[base + n + row];
+      let sa = 0;
+      let sbv = 0;
+      if (isoA >= 0) sa = isoA * e;
+      else for (let col = 0; col < k; col += 1) sa += IW[IA + row * k + col] * rows[base + n + col];
+      if (isoB >= 0) sbv = isoB * e;
+      else for (let col = 0; col < k; col += 1) sbv += IW[IB + row * k + col] * rows[base + n + col];
+      rows[base + n + 2 * k + row] = sa;
+      rows[base + n + 3 * k + row] = sbv;
+      KA += sa * e;
+      KB += sbv * e;
+    }
+    const K = KA + KB;
+    rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
+    rows[base + n + 4 * k + 1] = KA;
+    rows[base + n + 4 * k + 2] = KB;
   }
 
   /**
@@ -435,12 +538,11 @@ export class ContactSolver {
   }
 
   /**
-   * Applies the warm-start impulses (normal and friction) of every point: the arithmetic of
-   * `apply` with both bodies receiving, written inline (one call per sub-step, not per row).
+   * Applies the warm-start impulses (normals and friction patch) of every manifold: the arithmetic
+   * of `apply` with both bodies receiving, written inline (one call per sub-step, not per row).
    */
   warmStart(sb: SolverBodies): void {
-    const { n, k, m, RS } = this;
-    const rows = this.rows;
+    const { n, k, m, q, PR, RS } = this;
     const V = sb.v;
     const W = sb.w;
     const iA = n + 2 * k;
@@ -456,11 +558,17 @@ export class ContactSolver {
       const wb = b * k;
       const first = this.mfFirst[mf];
       const last = first + this.mfPoints[mf];
-      for (let cp = first; cp < last; cp += 1) {
-        for (let r = 0; r <= m; r += 1) {
-          const lambda = r === 0 ? this.lambdaN[cp] : this.lambdaT[cp * m + r - 1];
-          if (lambda === 0) continue;
-          const base = (cp * (m + 1) + r) * RS;
+      const pb = mf * PR * RS;
+      const rowCount = last - first + PR;
+      for (let r = 0; r < rowCount; r += 1) {
+        // points' normal rows, then the patch's tangent rows, then its twist rows
+        const point = r < last - first;
+        const pr = r - (last - first);
+        const rows = point ? this.rows : this.patchRows;
+        const base = point ? (first + r) * RS : pb + pr * RS;
+        const lambda = point ? this.lambdaN[first + r] : pr < m ? this.lambdaP[mf * m + pr] : this.lambdaW[mf * q + pr - m];
+        if (lambda === 0) continue;
+        if (point || pr < m) {
           const la = lambda * ima;
           const lb = lambda * imb;
           for (let d = 0; d < n; d += 1) {
@@ -468,10 +576,10 @@ export class ContactSolver {
             V[va + d] -= la * dir;
             V[vb + d] += lb * dir;
           }
-          for (let pl = 0; pl < k; pl += 1) {
-            W[wa + pl] -= lambda * rows[base + iA + pl];
-            W[wb + pl] += lambda * rows[base + iB + pl];
-          }
+        }
+        for (let pl = 0; pl < k; pl += 1) {
+          W[wa + pl] -= lambda * rows[base + iA + pl];
+          W[wb + pl] += lambda * rows[base + iB + pl];
         }
       }
     }
@@ -510,7 +618,7 @@ export class ContactSolver {
         c[SOLVE_CHANGE] = 0;
         if (this.writtenOut && this.n === 3) this.solveManifold3(sb, mf, shock);
         else if (this.writtenOut && this.n === 4) this.solveManifold4(sb, mf, shock);
-        else this.solveManifold(sb, mf, shock, 1);
+        else this.solveManifold(sb, mf, shock);
         if (c[SOLVE_CHANGE] <= tolerance) break;
         converged = false;
       }
@@ -519,16 +627,13 @@ export class ContactSolver {
   }
 
   /**
-   * Friction, then normal, on the points of manifold `mf` (see {@link ContactSolver.pass}); the
-   * normal rows are swept `normalSweeps` times. The row velocity and the impulse are written out
-   * inline: this is the innermost loop of the engine.
+   * The friction patch, then the normals, of manifold `mf` (see {@link ContactSolver.pass}). The
+   * row velocity and the impulse are written out inline: this is the innermost loop of the engine.
    */
-  private solveManifold(sb: SolverBodies, mf: number, shock: boolean, normalSweeps: number): void {
-    const n = this.n;
-    const k = this.k;
-    const m = this.m;
-    const RS = this.RS;
+  private solveManifold(sb: SolverBodies, mf: number, shock: boolean): void {
+    const { n, k, m, q, PR, RS } = this;
     const rows = this.rows;
+    const patch = this.patchRows;
     const V = sb.v;
     const W = sb.w;
     const a = this.mfA[mf];
@@ -554,90 +659,101 @@ export class ContactSolver {
     const mu = this.mfFriction[mf];
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
-    const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
     const tmp = this.tmp;
     let change = 0;
     if (mu > 0) {
-      for (let cp = first; cp < last; cp += 1) {
-        const maxT = mu * lambdaN[cp];
+      let sumN = 0;
+      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
+      const maxT = mu * sumN;
+      const radius = this.mfRadius[mf];
+      // block 0: the m tangent rows (limit μΣλ_n); block 1: the q twist rows (limit μΣλ_n·R)
+      for (let blk = 0; blk < 2; blk += 1) {
+        const twist = blk === 1;
+        const count = twist ? (radius > 0 ? q : 0) : m;
+        const lam = twist ? this.lambdaW : this.lambdaP;
+        const lo = twist ? mf * q : mf * m;
+        const rb0 = mf * PR * RS + (twist ? m * RS : 0);
+        const limit = twist ? maxT * radius : maxT;
         let norm2 = 0;
-        for (let t = 0; t < m; t += 1) {
-          const rb = (cp * (m + 1) + t + 1) * RS;
+        for (let t = 0; t < count; t += 1) {
+          const rb = rb0 + t * RS;
           let vt = 0;
-          for (let d = 0; d < n; d += 1) vt += rows[rb + d] * (V[vb + d] - V[va + d]);
-          for (let pl = 0; pl < k; pl += 1) vt += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
-          const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
-          const nl = K > 0 ? lambdaT[cp * m + t] - vt / K : lambdaT[cp * m + t];
+          if (!twist) for (let d = 0; d < n; d += 1) vt += patch[rb + d] * (V[vb + d] - V[va + d]);
+          for (let pl = 0; pl < k; pl += 1) vt += patch[rb + jB + pl] * W[wb + pl] - patch[rb + jA + pl] * W[wa + pl];
+          const K = fa * patch[rb + RS - 2] + fb * patch[rb + RS - 1];
+          const nl = K > 0 ? lam[lo + t] - vt / K : lam[lo + t];
           tmp[t] = nl;
           norm2 += nl * nl;
         }
-        const scale = norm2 > maxT * maxT ? maxT / Math.sqrt(norm2) : 1;
-        for (let t = 0; t < m; t += 1) {
+        const scale = norm2 > limit * limit ? limit / Math.sqrt(norm2) : 1;
+        for (let t = 0; t < count; t += 1) {
           const nl = tmp[t] * scale;
-          const dl = nl - lambdaT[cp * m + t];
-          lambdaT[cp * m + t] = nl;
+          const dl = nl - lam[lo + t];
+          lam[lo + t] = nl;
           if (dl === 0) continue;
-          const rb = (cp * (m + 1) + t + 1) * RS;
-          const moved = Math.abs(dl) * (fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1]);
+          const rb = rb0 + t * RS;
+          const moved = Math.abs(dl) * (fa * patch[rb + RS - 2] + fb * patch[rb + RS - 1]);
           if (moved > change) change = moved;
-          const la = ima * dl;
-          const lb = imb * dl;
-          for (let d = 0; d < n; d += 1) {
-            const dir = rows[rb + d];
-            V[va + d] -= la * dir;
-            V[vb + d] += lb * dir;
+          if (!twist) {
+            const la = ima * dl;
+            const lb = imb * dl;
+            for (let d = 0; d < n; d += 1) {
+              const dir = patch[rb + d];
+              V[va + d] -= la * dir;
+              V[vb + d] += lb * dir;
+            }
           }
           const ga = fa * dl;
           const gb = fb * dl;
           for (let pl = 0; pl < k; pl += 1) {
-            W[wa + pl] -= ga * rows[rb + iA + pl];
-            W[wb + pl] += gb * rows[rb + iB + pl];
+            W[wa + pl] -= ga * patch[rb + iA + pl];
+            W[wb + pl] += gb * patch[rb + iB + pl];
           }
         }
       }
     }
-    for (let sweep = 0; sweep < normalSweeps; sweep += 1) {
-      for (let cp = first; cp < last; cp += 1) {
-        const rb = cp * (m + 1) * RS;
-        const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
-        if (!(K > 0)) continue;
-        let vn = 0;
-        for (let d = 0; d < n; d += 1) vn += rows[rb + d] * (V[vb + d] - V[va + d]);
-        for (let pl = 0; pl < k; pl += 1) vn += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
-        const old = lambdaN[cp];
-        const nl = Math.max(0, old + (this.target[cp] - vn) / K);
-        lambdaN[cp] = nl;
-        if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
-        const dl = nl - old;
-        if (dl === 0) continue;
-        const moved = Math.abs(dl) * K;
-        if (moved > change) change = moved;
-        const la = ima * dl;
-        const lb = imb * dl;
-        for (let d = 0; d < n; d += 1) {
-          const dir = rows[rb + d];
-          V[va + d] -= la * dir;
-          V[vb + d] += lb * dir;
-        }
-        const ga = fa * dl;
-        const gb = fb * dl;
-        for (let pl = 0; pl < k; pl += 1) {
-          W[wa + pl] -= ga * rows[rb + iA + pl];
-          W[wb + pl] += gb * rows[rb + iB + pl];
-        }
+    for (let cp = first; cp < last; cp += 1) {
+      const rb = cp * RS;
+      const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
+      if (!(K > 0)) continue;
+      let vn = 0;
+      for (let d = 0; d < n; d += 1) vn += rows[rb + d] * (V[vb + d] - V[va + d]);
+      for (let pl = 0; pl < k; pl += 1) vn += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
+      const old = lambdaN[cp];
+      const nl = Math.max(0, old + (this.target[cp] - vn) / K);
+      lambdaN[cp] = nl;
+      if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
+      const dl = nl - old;
+      if (dl === 0) continue;
+      const moved = Math.abs(dl) * K;
+      if (moved > change) change = moved;
+      const la = ima * dl;
+      const lb = imb * dl;
+      for (let d = 0; d < n; d += 1) {
+        const dir = rows[rb + d];
+        V[va + d] -= la * dir;
+        V[vb + d] += lb * dir;
+      }
+      const ga = fa * dl;
+      const gb = fb * dl;
+      for (let pl = 0; pl < k; pl += 1) {
+        W[wa + pl] -= ga * rows[rb + iA + pl];
+        W[wb + pl] += gb * rows[rb + iB + pl];
       }
     }
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
   /**
-   * {@link ContactSolver.solveManifold} for n = 3, written out (k = 3, two friction rows, row
-   * stride 18): the same arithmetic in the same order, so results are bit-identical to the
-   * general loop, at about half its cost — 3D scenes spend most of their step here.
+   * {@link ContactSolver.solveManifold} for n = 3, written out (k = 3, 2 tangent and 1 twist
+   * row, row stride 18): the same arithmetic in the same order, so results are bit-identical
+   * to the general loop; the velocities of the two bodies stay in locals for the whole manifold.
+   * (Generated from the general loop; keep the two in step.)
    */
   private solveManifold3(sb: SolverBodies, mf: number, shock: boolean): void {
     const rows = this.rows;
+    const patch = this.patchRows;
     const V = sb.v;
     const W = sb.w;
     const a = this.mfA[mf];
@@ -654,33 +770,44 @@ export class ContactSolver {
     const imb = fb * sb.invMass[b];
     const va = a * 3;
     const vb = b * 3;
+    const wa = a * 3;
+    const wb = b * 3;
     let vax = V[va], vay = V[va + 1], vaz = V[va + 2];
     let vbx = V[vb], vby = V[vb + 1], vbz = V[vb + 2];
-    let wa0 = W[va], wa1 = W[va + 1], wa2 = W[va + 2];
-    let wb0 = W[vb], wb1 = W[vb + 1], wb2 = W[vb + 2];
+    let wa0 = W[wa], wa1 = W[wa + 1], wa2 = W[wa + 2];
+    let wb0 = W[wb], wb1 = W[wb + 1], wb2 = W[wb + 2];
     const mu = this.mfFriction[mf];
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
-    const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
     let change = 0;
     if (mu > 0) {
-      for (let cp = first; cp < last; cp += 1) {
-        const maxT = mu * lambdaN[cp];
-        const r1 = cp * 54 + 18;
-        const r2 = r1 + 18;
+      let sumN = 0;
+      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
+      const maxT = mu * sumN;
+      const radius = this.mfRadius[mf];
+      const pb = mf * 54;
+      const t1 = pb;
+      const t2 = pb + 18;
+      {
         const v1 =
-          rows[r1] * (vbx - vax) + rows[r1 + 1] * (vby - vay) + rows[r1 + 2] * (vbz - vaz) +
-          (rows[r1 + 6] * wb0 - rows[r1 + 3] * wa0) + (rows[r1 + 7] * wb1 - rows[r1 + 4] * wa1) +
-          (rows[r1 + 8] * wb2 - rows[r1 + 5] * wa2);
+          patch[t1] * (vbx - vax) +
+          patch[t1 + 1] * (vby - vay) +
+          patch[t1 + 2] * (vbz - vaz) +
+          (patch[t1 + 6] * wb0 - patch[t1 + 3] * wa0) +
+          (patch[t1 + 7] * wb1 - patch[t1 + 4] * wa1) +
+          (patch[t1 + 8] * wb2 - patch[t1 + 5] * wa2);
         const v2 =
-          rows[r2] * (vbx - vax) + rows[r2 + 1] * (vby - vay) + rows[r2 + 2] * (vbz - vaz) +
-          (rows[r2 + 6] * wb0 - rows[r2 + 3] * wa0) + (rows[r2 + 7] * wb1 - rows[r2 + 4] * wa1) +
-          (rows[r2 + 8] * wb2 - rows[r2 + 5] * wa2);
-        const K1 = fa * rows[r1 + 16] + fb * rows[r1 + 17];
-        const K2 = fa * rows[r2 + 16] + fb * rows[r2 + 17];
-        const o1 = lambdaT[cp * 2];
-        const o2 = lambdaT[cp * 2 + 1];
+          patch[t2] * (vbx - vax) +
+          patch[t2 + 1] * (vby - vay) +
+          patch[t2 + 2] * (vbz - vaz) +
+          (patch[t2 + 6] * wb0 - patch[t2 + 3] * wa0) +
+          (patch[t2 + 7] * wb1 - patch[t2 + 4] * wa1) +
+          (patch[t2 + 8] * wb2 - patch[t2 + 5] * wa2);
+        const K1 = fa * patch[t1 + 16] + fb * patch[t1 + 17];
+        const K2 = fa * patch[t2 + 16] + fb * patch[t2 + 17];
+        const o1 = this.lambdaP[mf * 2];
+        const o2 = this.lambdaP[mf * 2 + 1];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
         const norm2 = n1 * n1 + n2 * n2;
@@ -689,8 +816,8 @@ export class ContactSolver {
           n1 *= scale;
           n2 *= scale;
         }
-        lambdaT[cp * 2] = n1;
-        lambdaT[cp * 2 + 1] = n2;
+        this.lambdaP[mf * 2] = n1;
+        this.lambdaP[mf * 2 + 1] = n2;
         const d1 = n1 - o1;
         const d2 = n2 - o2;
         // Applied one row after the other, as the general loop does.
@@ -699,38 +826,69 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
-          vax -= la * rows[r1]; vbx += lb * rows[r1];
-          vay -= la * rows[r1 + 1]; vby += lb * rows[r1 + 1];
-          vaz -= la * rows[r1 + 2]; vbz += lb * rows[r1 + 2];
+          vax -= la * patch[t1]; vbx += lb * patch[t1];
+          vay -= la * patch[t1 + 1]; vby += lb * patch[t1 + 1];
+          vaz -= la * patch[t1 + 2]; vbz += lb * patch[t1 + 2];
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * rows[r1 + 9]; wb0 += gb * rows[r1 + 12];
-          wa1 -= ga * rows[r1 + 10]; wb1 += gb * rows[r1 + 13];
-          wa2 -= ga * rows[r1 + 11]; wb2 += gb * rows[r1 + 14];
+          wa0 -= ga * patch[t1 + 9]; wb0 += gb * patch[t1 + 12];
+          wa1 -= ga * patch[t1 + 10]; wb1 += gb * patch[t1 + 13];
+          wa2 -= ga * patch[t1 + 11]; wb2 += gb * patch[t1 + 14];
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
-          vax -= la * rows[r2]; vbx += lb * rows[r2];
-          vay -= la * rows[r2 + 1]; vby += lb * rows[r2 + 1];
-          vaz -= la * rows[r2 + 2]; vbz += lb * rows[r2 + 2];
+          vax -= la * patch[t2]; vbx += lb * patch[t2];
+          vay -= la * patch[t2 + 1]; vby += lb * patch[t2 + 1];
+          vaz -= la * patch[t2 + 2]; vbz += lb * patch[t2 + 2];
           const ga = fa * d2;
           const gb = fb * d2;
-          wa0 -= ga * rows[r2 + 9]; wb0 += gb * rows[r2 + 12];
-          wa1 -= ga * rows[r2 + 10]; wb1 += gb * rows[r2 + 13];
-          wa2 -= ga * rows[r2 + 11]; wb2 += gb * rows[r2 + 14];
+          wa0 -= ga * patch[t2 + 9]; wb0 += gb * patch[t2 + 12];
+          wa1 -= ga * patch[t2 + 10]; wb1 += gb * patch[t2 + 13];
+          wa2 -= ga * patch[t2 + 11]; wb2 += gb * patch[t2 + 14];
+        }
+      }
+      if (radius > 0) {
+        const limit = maxT * radius;
+        const w1 = pb + 36;
+        const v1 =
+          (patch[w1 + 6] * wb0 - patch[w1 + 3] * wa0) +
+          (patch[w1 + 7] * wb1 - patch[w1 + 4] * wa1) +
+          (patch[w1 + 8] * wb2 - patch[w1 + 5] * wa2);
+        const K1 = fa * patch[w1 + 16] + fb * patch[w1 + 17];
+        const o1 = this.lambdaW[mf];
+        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
+        const norm2 = n1 * n1;
+        if (norm2 > limit * limit) {
+          const scale = limit / Math.sqrt(norm2);
+          n1 *= scale;
+        }
+        this.lambdaW[mf] = n1;
+        const d1 = n1 - o1;
+        // Applied one row after the other, as the general loop does.
+        if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
+          const ga = fa * d1;
+          const gb = fb * d1;
+          wa0 -= ga * patch[w1 + 9]; wb0 += gb * patch[w1 + 12];
+          wa1 -= ga * patch[w1 + 10]; wb1 += gb * patch[w1 + 13];
+          wa2 -= ga * patch[w1 + 11]; wb2 += gb * patch[w1 + 14];
         }
       }
     }
     for (let cp = first; cp < last; cp += 1) {
-      const rb = cp * 54;
+      const rb = cp * 18;
       const K = fa * rows[rb + 16] + fb * rows[rb + 17];
       if (!(K > 0)) continue;
       const vn =
-        rows[rb] * (vbx - vax) + rows[rb + 1] * (vby - vay) + rows[rb + 2] * (vbz - vaz) +
-        (rows[rb + 6] * wb0 - rows[rb + 3] * wa0) + (rows[rb + 7] * wb1 - rows[rb + 4] * wa1) +
+        rows[rb] * (vbx - vax) +
+        rows[rb + 1] * (vby - vay) +
+        rows[rb + 2] * (vbz - vaz) +
+        (rows[rb + 6] * wb0 - rows[rb + 3] * wa0) +
+        (rows[rb + 7] * wb1 - rows[rb + 4] * wa1) +
         (rows[rb + 8] * wb2 - rows[rb + 5] * wa2);
       const old = lambdaN[cp];
       const nl = Math.max(0, old + (this.target[cp] - vn) / K);
@@ -753,20 +911,21 @@ export class ContactSolver {
     }
     // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
     V[va] = vax; V[va + 1] = vay; V[va + 2] = vaz;
-    W[va] = wa0; W[va + 1] = wa1; W[va + 2] = wa2;
+    W[wa] = wa0; W[wa + 1] = wa1; W[wa + 2] = wa2;
     V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz;
-    W[vb] = wb0; W[vb + 1] = wb1; W[vb + 2] = wb2;
+    W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2;
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
   /**
-   * {@link ContactSolver.solveManifold} for n = 4, written out (k = 6, three friction rows, row
-   * stride 31): the same arithmetic in the same order, so results are bit-identical to the
-   * general loop; the velocities of the two bodies stay in locals for the whole manifold.
+   * {@link ContactSolver.solveManifold} for n = 4, written out (k = 6, 3 tangent and 3 twist
+   * rows, row stride 31): the same arithmetic in the same order, so results are bit-identical
+   * to the general loop; the velocities of the two bodies stay in locals for the whole manifold.
    * (Generated from the general loop; keep the two in step.)
    */
   private solveManifold4(sb: SolverBodies, mf: number, shock: boolean): void {
     const rows = this.rows;
+    const patch = this.patchRows;
     const V = sb.v;
     const W = sb.w;
     const a = this.mfA[mf];
@@ -792,54 +951,57 @@ export class ContactSolver {
     const mu = this.mfFriction[mf];
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
-    const lambdaT = this.lambdaT;
     const lambdaN = this.lambdaN;
     let change = 0;
     if (mu > 0) {
-      for (let cp = first; cp < last; cp += 1) {
-        const maxT = mu * lambdaN[cp];
-        const r1 = cp * 124 + 31;
-        const r2 = r1 + 31;
-        const r3 = r2 + 31;
+      let sumN = 0;
+      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
+      const maxT = mu * sumN;
+      const radius = this.mfRadius[mf];
+      const pb = mf * 186;
+      const t1 = pb;
+      const t2 = pb + 31;
+      const t3 = pb + 62;
+      {
         const v1 =
-          rows[r1] * (vbx - vax) +
-          rows[r1 + 1] * (vby - vay) +
-          rows[r1 + 2] * (vbz - vaz) +
-          rows[r1 + 3] * (vbw - vaw) +
-          (rows[r1 + 10] * wb0 - rows[r1 + 4] * wa0) +
-          (rows[r1 + 11] * wb1 - rows[r1 + 5] * wa1) +
-          (rows[r1 + 12] * wb2 - rows[r1 + 6] * wa2) +
-          (rows[r1 + 13] * wb3 - rows[r1 + 7] * wa3) +
-          (rows[r1 + 14] * wb4 - rows[r1 + 8] * wa4) +
-          (rows[r1 + 15] * wb5 - rows[r1 + 9] * wa5);
+          patch[t1] * (vbx - vax) +
+          patch[t1 + 1] * (vby - vay) +
+          patch[t1 + 2] * (vbz - vaz) +
+          patch[t1 + 3] * (vbw - vaw) +
+          (patch[t1 + 10] * wb0 - patch[t1 + 4] * wa0) +
+          (patch[t1 + 11] * wb1 - patch[t1 + 5] * wa1) +
+          (patch[t1 + 12] * wb2 - patch[t1 + 6] * wa2) +
+          (patch[t1 + 13] * wb3 - patch[t1 + 7] * wa3) +
+          (patch[t1 + 14] * wb4 - patch[t1 + 8] * wa4) +
+          (patch[t1 + 15] * wb5 - patch[t1 + 9] * wa5);
         const v2 =
-          rows[r2] * (vbx - vax) +
-          rows[r2 + 1] * (vby - vay) +
-          rows[r2 + 2] * (vbz - vaz) +
-          rows[r2 + 3] * (vbw - vaw) +
-          (rows[r2 + 10] * wb0 - rows[r2 + 4] * wa0) +
-          (rows[r2 + 11] * wb1 - rows[r2 + 5] * wa1) +
-          (rows[r2 + 12] * wb2 - rows[r2 + 6] * wa2) +
-          (rows[r2 + 13] * wb3 - rows[r2 + 7] * wa3) +
-          (rows[r2 + 14] * wb4 - rows[r2 + 8] * wa4) +
-          (rows[r2 + 15] * wb5 - rows[r2 + 9] * wa5);
+          patch[t2] * (vbx - vax) +
+          patch[t2 + 1] * (vby - vay) +
+          patch[t2 + 2] * (vbz - vaz) +
+          patch[t2 + 3] * (vbw - vaw) +
+          (patch[t2 + 10] * wb0 - patch[t2 + 4] * wa0) +
+          (patch[t2 + 11] * wb1 - patch[t2 + 5] * wa1) +
+          (patch[t2 + 12] * wb2 - patch[t2 + 6] * wa2) +
+          (patch[t2 + 13] * wb3 - patch[t2 + 7] * wa3) +
+          (patch[t2 + 14] * wb4 - patch[t2 + 8] * wa4) +
+          (patch[t2 + 15] * wb5 - patch[t2 + 9] * wa5);
         const v3 =
-          rows[r3] * (vbx - vax) +
-          rows[r3 + 1] * (vby - vay) +
-          rows[r3 + 2] * (vbz - vaz) +
-          rows[r3 + 3] * (vbw - vaw) +
-          (rows[r3 + 10] * wb0 - rows[r3 + 4] * wa0) +
-          (rows[r3 + 11] * wb1 - rows[r3 + 5] * wa1) +
-          (rows[r3 + 12] * wb2 - rows[r3 + 6] * wa2) +
-          (rows[r3 + 13] * wb3 - rows[r3 + 7] * wa3) +
-          (rows[r3 + 14] * wb4 - rows[r3 + 8] * wa4) +
-          (rows[r3 + 15] * wb5 - rows[r3 + 9] * wa5);
-        const K1 = fa * rows[r1 + 29] + fb * rows[r1 + 30];
-        const K2 = fa * rows[r2 + 29] + fb * rows[r2 + 30];
-        const K3 = fa * rows[r3 + 29] + fb * rows[r3 + 30];
-        const o1 = lambdaT[cp * 3];
-        const o2 = lambdaT[cp * 3 + 1];
-        const o3 = lambdaT[cp * 3 + 2];
+          patch[t3] * (vbx - vax) +
+          patch[t3 + 1] * (vby - vay) +
+          patch[t3 + 2] * (vbz - vaz) +
+          patch[t3 + 3] * (vbw - vaw) +
+          (patch[t3 + 10] * wb0 - patch[t3 + 4] * wa0) +
+          (patch[t3 + 11] * wb1 - patch[t3 + 5] * wa1) +
+          (patch[t3 + 12] * wb2 - patch[t3 + 6] * wa2) +
+          (patch[t3 + 13] * wb3 - patch[t3 + 7] * wa3) +
+          (patch[t3 + 14] * wb4 - patch[t3 + 8] * wa4) +
+          (patch[t3 + 15] * wb5 - patch[t3 + 9] * wa5);
+        const K1 = fa * patch[t1 + 29] + fb * patch[t1 + 30];
+        const K2 = fa * patch[t2 + 29] + fb * patch[t2 + 30];
+        const K3 = fa * patch[t3 + 29] + fb * patch[t3 + 30];
+        const o1 = this.lambdaP[mf * 3];
+        const o2 = this.lambdaP[mf * 3 + 1];
+        const o3 = this.lambdaP[mf * 3 + 2];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
         let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
@@ -850,9 +1012,9 @@ export class ContactSolver {
           n2 *= scale;
           n3 *= scale;
         }
-        lambdaT[cp * 3] = n1;
-        lambdaT[cp * 3 + 1] = n2;
-        lambdaT[cp * 3 + 2] = n3;
+        this.lambdaP[mf * 3] = n1;
+        this.lambdaP[mf * 3 + 1] = n2;
+        this.lambdaP[mf * 3 + 2] = n3;
         const d1 = n1 - o1;
         const d2 = n2 - o2;
         const d3 = n3 - o3;
@@ -862,59 +1024,145 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
-          vax -= la * rows[r1]; vbx += lb * rows[r1];
-          vay -= la * rows[r1 + 1]; vby += lb * rows[r1 + 1];
-          vaz -= la * rows[r1 + 2]; vbz += lb * rows[r1 + 2];
-          vaw -= la * rows[r1 + 3]; vbw += lb * rows[r1 + 3];
+          vax -= la * patch[t1]; vbx += lb * patch[t1];
+          vay -= la * patch[t1 + 1]; vby += lb * patch[t1 + 1];
+          vaz -= la * patch[t1 + 2]; vbz += lb * patch[t1 + 2];
+          vaw -= la * patch[t1 + 3]; vbw += lb * patch[t1 + 3];
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * rows[r1 + 16]; wb0 += gb * rows[r1 + 22];
-          wa1 -= ga * rows[r1 + 17]; wb1 += gb * rows[r1 + 23];
-          wa2 -= ga * rows[r1 + 18]; wb2 += gb * rows[r1 + 24];
-          wa3 -= ga * rows[r1 + 19]; wb3 += gb * rows[r1 + 25];
-          wa4 -= ga * rows[r1 + 20]; wb4 += gb * rows[r1 + 26];
-          wa5 -= ga * rows[r1 + 21]; wb5 += gb * rows[r1 + 27];
+          wa0 -= ga * patch[t1 + 16]; wb0 += gb * patch[t1 + 22];
+          wa1 -= ga * patch[t1 + 17]; wb1 += gb * patch[t1 + 23];
+          wa2 -= ga * patch[t1 + 18]; wb2 += gb * patch[t1 + 24];
+          wa3 -= ga * patch[t1 + 19]; wb3 += gb * patch[t1 + 25];
+          wa4 -= ga * patch[t1 + 20]; wb4 += gb * patch[t1 + 26];
+          wa5 -= ga * patch[t1 + 21]; wb5 += gb * patch[t1 + 27];
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
-          vax -= la * rows[r2]; vbx += lb * rows[r2];
-          vay -= la * rows[r2 + 1]; vby += lb * rows[r2 + 1];
-          vaz -= la * rows[r2 + 2]; vbz += lb * rows[r2 + 2];
-          vaw -= la * rows[r2 + 3]; vbw += lb * rows[r2 + 3];
+          vax -= la * patch[t2]; vbx += lb * patch[t2];
+          vay -= la * patch[t2 + 1]; vby += lb * patch[t2 + 1];
+          vaz -= la * patch[t2 + 2]; vbz += lb * patch[t2 + 2];
+          vaw -= la * patch[t2 + 3]; vbw += lb * patch[t2 + 3];
           const ga = fa * d2;
           const gb = fb * d2;
-          wa0 -= ga * rows[r2 + 16]; wb0 += gb * rows[r2 + 22];
-          wa1 -= ga * rows[r2 + 17]; wb1 += gb * rows[r2 + 23];
-          wa2 -= ga * rows[r2 + 18]; wb2 += gb * rows[r2 + 24];
-          wa3 -= ga * rows[r2 + 19]; wb3 += gb * rows[r2 + 25];
-          wa4 -= ga * rows[r2 + 20]; wb4 += gb * rows[r2 + 26];
-          wa5 -= ga * rows[r2 + 21]; wb5 += gb * rows[r2 + 27];
+          wa0 -= ga * patch[t2 + 16]; wb0 += gb * patch[t2 + 22];
+          wa1 -= ga * patch[t2 + 17]; wb1 += gb * patch[t2 + 23];
+          wa2 -= ga * patch[t2 + 18]; wb2 += gb * patch[t2 + 24];
+          wa3 -= ga * patch[t2 + 19]; wb3 += gb * patch[t2 + 25];
+          wa4 -= ga * patch[t2 + 20]; wb4 += gb * patch[t2 + 26];
+          wa5 -= ga * patch[t2 + 21]; wb5 += gb * patch[t2 + 27];
         }
         if (d3 !== 0) {
           const moved = Math.abs(d3) * K3;
           if (moved > change) change = moved;
           const la = ima * d3;
           const lb = imb * d3;
-          vax -= la * rows[r3]; vbx += lb * rows[r3];
-          vay -= la * rows[r3 + 1]; vby += lb * rows[r3 + 1];
-          vaz -= la * rows[r3 + 2]; vbz += lb * rows[r3 + 2];
-          vaw -= la * rows[r3 + 3]; vbw += lb * rows[r3 + 3];
+          vax -= la * patch[t3]; vbx += lb * patch[t3];
+          vay -= la * patch[t3 + 1]; vby += lb * patch[t3 + 1];
+          vaz -= la * patch[t3 + 2]; vbz += lb * patch[t3 + 2];
+          vaw -= la * patch[t3 + 3]; vbw += lb * patch[t3 + 3];
           const ga = fa * d3;
           const gb = fb * d3;
-          wa0 -= ga * rows[r3 + 16]; wb0 += gb * rows[r3 + 22];
-          wa1 -= ga * rows[r3 + 17]; wb1 += gb * rows[r3 + 23];
-          wa2 -= ga * rows[r3 + 18]; wb2 += gb * rows[r3 + 24];
-          wa3 -= ga * rows[r3 + 19]; wb3 += gb * rows[r3 + 25];
-          wa4 -= ga * rows[r3 + 20]; wb4 += gb * rows[r3 + 26];
-          wa5 -= ga * rows[r3 + 21]; wb5 += gb * rows[r3 + 27];
+          wa0 -= ga * patch[t3 + 16]; wb0 += gb * patch[t3 + 22];
+          wa1 -= ga * patch[t3 + 17]; wb1 += gb * patch[t3 + 23];
+          wa2 -= ga * patch[t3 + 18]; wb2 += gb * patch[t3 + 24];
+          wa3 -= ga * patch[t3 + 19]; wb3 += gb * patch[t3 + 25];
+          wa4 -= ga * patch[t3 + 20]; wb4 += gb * patch[t3 + 26];
+          wa5 -= ga * patch[t3 + 21]; wb5 += gb * patch[t3 + 27];
+        }
+      }
+      if (radius > 0) {
+        const limit = maxT * radius;
+        const w1 = pb + 93;
+        const w2 = pb + 124;
+        const w3 = pb + 155;
+        const v1 =
+          (patch[w1 + 10] * wb0 - patch[w1 + 4] * wa0) +
+          (patch[w1 + 11] * wb1 - patch[w1 + 5] * wa1) +
+          (patch[w1 + 12] * wb2 - patch[w1 + 6] * wa2) +
+          (patch[w1 + 13] * wb3 - patch[w1 + 7] * wa3) +
+          (patch[w1 + 14] * wb4 - patch[w1 + 8] * wa4) +
+          (patch[w1 + 15] * wb5 - patch[w1 + 9] * wa5);
+        const v2 =
+          (patch[w2 + 10] * wb0 - patch[w2 + 4] * wa0) +
+          (patch[w2 + 11] * wb1 - patch[w2 + 5] * wa1) +
+          (patch[w2 + 12] * wb2 - patch[w2 + 6] * wa2) +
+          (patch[w2 + 13] * wb3 - patch[w2 + 7] * wa3) +
+          (patch[w2 + 14] * wb4 - patch[w2 + 8] * wa4) +
+          (patch[w2 + 15] * wb5 - patch[w2 + 9] * wa5);
+        const v3 =
+          (patch[w3 + 10] * wb0 - patch[w3 + 4] * wa0) +
+          (patch[w3 + 11] * wb1 - patch[w3 + 5] * wa1) +
+          (patch[w3 + 12] * wb2 - patch[w3 + 6] * wa2) +
+          (patch[w3 + 13] * wb3 - patch[w3 + 7] * wa3) +
+          (patch[w3 + 14] * wb4 - patch[w3 + 8] * wa4) +
+          (patch[w3 + 15] * wb5 - patch[w3 + 9] * wa5);
+        const K1 = fa * patch[w1 + 29] + fb * patch[w1 + 30];
+        const K2 = fa * patch[w2 + 29] + fb * patch[w2 + 30];
+        const K3 = fa * patch[w3 + 29] + fb * patch[w3 + 30];
+        const o1 = this.lambdaW[mf * 3];
+        const o2 = this.lambdaW[mf * 3 + 1];
+        const o3 = this.lambdaW[mf * 3 + 2];
+        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
+        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
+        let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
+        const norm2 = n1 * n1 + n2 * n2 + n3 * n3;
+        if (norm2 > limit * limit) {
+          const scale = limit / Math.sqrt(norm2);
+          n1 *= scale;
+          n2 *= scale;
+          n3 *= scale;
+        }
+        this.lambdaW[mf * 3] = n1;
+        this.lambdaW[mf * 3 + 1] = n2;
+        this.lambdaW[mf * 3 + 2] = n3;
+        const d1 = n1 - o1;
+        const d2 = n2 - o2;
+        const d3 = n3 - o3;
+        // Applied one row after the other, as the general loop does.
+        if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
+          const ga = fa * d1;
+          const gb = fb * d1;
+          wa0 -= ga * patch[w1 + 16]; wb0 += gb * patch[w1 + 22];
+          wa1 -= ga * patch[w1 + 17]; wb1 += gb * patch[w1 + 23];
+          wa2 -= ga * patch[w1 + 18]; wb2 += gb * patch[w1 + 24];
+          wa3 -= ga * patch[w1 + 19]; wb3 += gb * patch[w1 + 25];
+          wa4 -= ga * patch[w1 + 20]; wb4 += gb * patch[w1 + 26];
+          wa5 -= ga * patch[w1 + 21]; wb5 += gb * patch[w1 + 27];
+        }
+        if (d2 !== 0) {
+          const moved = Math.abs(d2) * K2;
+          if (moved > change) change = moved;
+          const ga = fa * d2;
+          const gb = fb * d2;
+          wa0 -= ga * patch[w2 + 16]; wb0 += gb * patch[w2 + 22];
+          wa1 -= ga * patch[w2 + 17]; wb1 += gb * patch[w2 + 23];
+          wa2 -= ga * patch[w2 + 18]; wb2 += gb * patch[w2 + 24];
+          wa3 -= ga * patch[w2 + 19]; wb3 += gb * patch[w2 + 25];
+          wa4 -= ga * patch[w2 + 20]; wb4 += gb * patch[w2 + 26];
+          wa5 -= ga * patch[w2 + 21]; wb5 += gb * patch[w2 + 27];
+        }
+        if (d3 !== 0) {
+          const moved = Math.abs(d3) * K3;
+          if (moved > change) change = moved;
+          const ga = fa * d3;
+          const gb = fb * d3;
+          wa0 -= ga * patch[w3 + 16]; wb0 += gb * patch[w3 + 22];
+          wa1 -= ga * patch[w3 + 17]; wb1 += gb * patch[w3 + 23];
+          wa2 -= ga * patch[w3 + 18]; wb2 += gb * patch[w3 + 24];
+          wa3 -= ga * patch[w3 + 19]; wb3 += gb * patch[w3 + 25];
+          wa4 -= ga * patch[w3 + 20]; wb4 += gb * patch[w3 + 26];
+          wa5 -= ga * patch[w3 + 21]; wb5 += gb * patch[w3 + 27];
         }
       }
     }
     for (let cp = first; cp < last; cp += 1) {
-      const rb = cp * 124;
+      const rb = cp * 31;
       const K = fa * rows[rb + 29] + fb * rows[rb + 30];
       if (!(K > 0)) continue;
       const vn =
@@ -958,7 +1206,6 @@ export class ContactSolver {
     W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2; W[wb + 3] = wb3; W[wb + 4] = wb4; W[wb + 5] = wb5;
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
-
 
   /**
    * `iterations` Gauss–Seidel passes over every manifold, fewer when a pass changes no row's
@@ -1033,7 +1280,7 @@ export class ContactSolver {
    * moment of impact, a fraction of a sub-step later, so the apex and the energy are right.
    */
   restitution(sb: SolverBodies): void {
-    const { m, RS } = this;
+    const { RS } = this;
     const c = this.constants;
     const slop = c[SOLVE_SLOP];
     const threshold = c[SOLVE_THRESHOLD];
@@ -1049,7 +1296,7 @@ export class ContactSolver {
       for (let cp = first; cp < last; cp += 1) {
         const v0 = this.vn0[cp];
         if (v0 > -threshold || this.maxLambda[cp] === 0) continue;
-        const base = cp * (m + 1) * RS;
+        const base = cp * RS;
         this.rowVelocity(sb, base, a, b, tmp, 0);
         // A point still short of the surface (a speculative stop) bounces in the next sub-step,
         // from where it touches, with the approach speed the stop recorded.
@@ -1070,24 +1317,30 @@ export class ContactSolver {
 
   /** Stores the accumulated impulses in the contacts for the next sub-step's warm start. */
   store(contacts: ContactSet): void {
-    const { n, m } = this;
+    const { n, k, m, q, PR, RS } = this;
     const P = contacts.pointCapacity;
-    const tangents = this.rows;
+    const patch = this.patchRows;
     for (let mf = 0; mf < this.mfCount; mf += 1) {
       const slot = this.mfContact[mf];
       const first = this.mfFirst[mf];
       const count = this.mfPoints[mf];
-      for (let q = 0; q < count; q += 1) {
-        const cp = first + q;
-        const ni = slot * P + q;
+      for (let pq = 0; pq < count; pq += 1) {
+        const cp = first + pq;
+        const ni = slot * P + pq;
         contacts.normalImpulse[ni] = this.lambdaN[cp];
         contacts.approachSpeed[ni] = this.sep[cp] > this.constants[SOLVE_SLOP] && this.maxLambda[cp] > 0 ? this.vn0[cp] : 0;
-        const ti = ni * n;
-        for (let d = 0; d < n; d += 1) {
-          let s = 0;
-          for (let t = 0; t < m; t += 1) s += this.lambdaT[cp * m + t] * tangents[(cp * (m + 1) + t + 1) * this.RS + d];
-          contacts.tangentImpulse[ti + d] = s;
-        }
+      }
+      // The patch as a world vector and a world bivector: they survive a change of tangent basis.
+      const pb = mf * PR * RS;
+      for (let d = 0; d < n; d += 1) {
+        let s = 0;
+        for (let t = 0; t < m; t += 1) s += this.lambdaP[mf * m + t] * patch[pb + t * RS + d];
+        contacts.patchTangent[slot * n + d] = s;
+      }
+      for (let pl = 0; pl < k; pl += 1) {
+        let s = 0;
+        for (let w = 0; w < q; w += 1) s += this.lambdaW[mf * q + w] * patch[pb + (m + w) * RS + n + pl];
+        contacts.patchTwist[slot * k + pl] = s;
       }
     }
   }

@@ -232,6 +232,7 @@ export class ContactSolver {
       const xB = B.x;
       const V = sb.v;
       const W = sb.w;
+      const bouncy = this.mfRestitution[mf] !== 0;
       for (let d = 0; d < n; d += 1) centre[d] = 0;
       for (let pq = 0; pq < count; pq += 1) {
         const cp = this.cpCount++;
@@ -244,15 +245,19 @@ export class ContactSolver {
         const base = cp * RS;
         for (let d = 0; d < n; d += 1) rows[base + d] = N[d];
         this.buildRow(rows, base, a, b, sb, fast);
-        // Normal velocity before the solve, and the velocity target of the point.
-        let vn = 0;
-        for (let d = 0; d < n; d += 1) vn += rows[base + d] * (V[b * n + d] - V[a * n + d]);
-        for (let pl = 0; pl < k; pl += 1) {
-          vn += rows[base + n + k + pl] * W[b * k + pl] - rows[base + n + pl] * W[a * k + pl];
-        }
-        // Restitution bounces from the faster of the approach now and the approach a speculative
-        // contact stopped in the last sub-step (see ContactSet.approachSpeed).
-        this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + pq]);
+        // Normal velocity before the solve: only restitution reads it (from vn0 here, and from
+        // the approach speed it leaves for the next sub-step), so a pair that cannot bounce skips it.
+        if (bouncy) {
+          let vn = 0;
+          for (let d = 0; d < n; d += 1) vn += rows[base + d] * (V[b * n + d] - V[a * n + d]);
+          for (let pl = 0; pl < k; pl += 1) {
+            vn += rows[base + n + k + pl] * W[b * k + pl] - rows[base + n + pl] * W[a * k + pl];
+          }
+          // Restitution bounces from the faster of the approach now and the approach a
+          // speculative contact stopped in the last sub-step (see ContactSet.approachSpeed).
+          this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + pq]);
+        } else this.vn0[cp] = 0;
+        // The velocity target of the point.
         const s = man.separations[pq];
         this.sep[cp] = s;
         this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
@@ -780,6 +785,10 @@ export class ContactSolver {
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
     const lambdaN = this.lambdaN;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    const target = this.target;
+    const maxLambda = this.maxLambda;
     let change = 0;
     if (mu > 0) {
       let sumN = 0;
@@ -806,8 +815,8 @@ export class ContactSolver {
           (patch[t2 + 8] * wb2 - patch[t2 + 5] * wa2);
         const K1 = fa * patch[t1 + 16] + fb * patch[t1 + 17];
         const K2 = fa * patch[t2 + 16] + fb * patch[t2 + 17];
-        const o1 = this.lambdaP[mf * 2];
-        const o2 = this.lambdaP[mf * 2 + 1];
+        const o1 = lambdaP[mf * 2];
+        const o2 = lambdaP[mf * 2 + 1];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
         const norm2 = n1 * n1 + n2 * n2;
@@ -816,8 +825,8 @@ export class ContactSolver {
           n1 *= scale;
           n2 *= scale;
         }
-        this.lambdaP[mf * 2] = n1;
-        this.lambdaP[mf * 2 + 1] = n2;
+        lambdaP[mf * 2] = n1;
+        lambdaP[mf * 2 + 1] = n2;
         const d1 = n1 - o1;
         const d2 = n2 - o2;
         // Applied one row after the other, as the general loop does.
@@ -858,14 +867,14 @@ export class ContactSolver {
           (patch[w1 + 7] * wb1 - patch[w1 + 4] * wa1) +
           (patch[w1 + 8] * wb2 - patch[w1 + 5] * wa2);
         const K1 = fa * patch[w1 + 16] + fb * patch[w1 + 17];
-        const o1 = this.lambdaW[mf];
+        const o1 = lambdaW[mf];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         const norm2 = n1 * n1;
         if (norm2 > limit * limit) {
           const scale = limit / Math.sqrt(norm2);
           n1 *= scale;
         }
-        this.lambdaW[mf] = n1;
+        lambdaW[mf] = n1;
         const d1 = n1 - o1;
         // Applied one row after the other, as the general loop does.
         if (d1 !== 0) {
@@ -891,9 +900,9 @@ export class ContactSolver {
         (rows[rb + 7] * wb1 - rows[rb + 4] * wa1) +
         (rows[rb + 8] * wb2 - rows[rb + 5] * wa2);
       const old = lambdaN[cp];
-      const nl = Math.max(0, old + (this.target[cp] - vn) / K);
+      const nl = Math.max(0, old + (target[cp] - vn) / K);
       lambdaN[cp] = nl;
-      if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
+      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
       const moved = Math.abs(dl) * K;
@@ -952,6 +961,10 @@ export class ContactSolver {
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
     const lambdaN = this.lambdaN;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    const target = this.target;
+    const maxLambda = this.maxLambda;
     let change = 0;
     if (mu > 0) {
       let sumN = 0;
@@ -999,9 +1012,9 @@ export class ContactSolver {
         const K1 = fa * patch[t1 + 29] + fb * patch[t1 + 30];
         const K2 = fa * patch[t2 + 29] + fb * patch[t2 + 30];
         const K3 = fa * patch[t3 + 29] + fb * patch[t3 + 30];
-        const o1 = this.lambdaP[mf * 3];
-        const o2 = this.lambdaP[mf * 3 + 1];
-        const o3 = this.lambdaP[mf * 3 + 2];
+        const o1 = lambdaP[mf * 3];
+        const o2 = lambdaP[mf * 3 + 1];
+        const o3 = lambdaP[mf * 3 + 2];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
         let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
@@ -1012,9 +1025,9 @@ export class ContactSolver {
           n2 *= scale;
           n3 *= scale;
         }
-        this.lambdaP[mf * 3] = n1;
-        this.lambdaP[mf * 3 + 1] = n2;
-        this.lambdaP[mf * 3 + 2] = n3;
+        lambdaP[mf * 3] = n1;
+        lambdaP[mf * 3 + 1] = n2;
+        lambdaP[mf * 3 + 2] = n3;
         const d1 = n1 - o1;
         const d2 = n2 - o2;
         const d3 = n3 - o3;
@@ -1103,9 +1116,9 @@ export class ContactSolver {
         const K1 = fa * patch[w1 + 29] + fb * patch[w1 + 30];
         const K2 = fa * patch[w2 + 29] + fb * patch[w2 + 30];
         const K3 = fa * patch[w3 + 29] + fb * patch[w3 + 30];
-        const o1 = this.lambdaW[mf * 3];
-        const o2 = this.lambdaW[mf * 3 + 1];
-        const o3 = this.lambdaW[mf * 3 + 2];
+        const o1 = lambdaW[mf * 3];
+        const o2 = lambdaW[mf * 3 + 1];
+        const o3 = lambdaW[mf * 3 + 2];
         let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
         let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
         let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
@@ -1116,9 +1129,9 @@ export class ContactSolver {
           n2 *= scale;
           n3 *= scale;
         }
-        this.lambdaW[mf * 3] = n1;
-        this.lambdaW[mf * 3 + 1] = n2;
-        this.lambdaW[mf * 3 + 2] = n3;
+        lambdaW[mf * 3] = n1;
+        lambdaW[mf * 3 + 1] = n2;
+        lambdaW[mf * 3 + 2] = n3;
         const d1 = n1 - o1;
         const d2 = n2 - o2;
         const d3 = n3 - o3;
@@ -1177,9 +1190,9 @@ export class ContactSolver {
         (rows[rb + 14] * wb4 - rows[rb + 8] * wa4) +
         (rows[rb + 15] * wb5 - rows[rb + 9] * wa5);
       const old = lambdaN[cp];
-      const nl = Math.max(0, old + (this.target[cp] - vn) / K);
+      const nl = Math.max(0, old + (target[cp] - vn) / K);
       lambdaN[cp] = nl;
-      if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
+      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
       const moved = Math.abs(dl) * K;

@@ -47,7 +47,7 @@ const SOLVE_TOLERANCE = 5;
 /** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
 const SOLVE_CHANGE = 6;
 /** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
-const SHOCK_INNER_SWEEPS = 4;
+const SHOCK_INNER_SWEEPS = 3;
 
 /** Sequential-impulse solver of the contacts of one world. */
 export class ContactSolver {

@@ -563,28 +563,41 @@ export class ContactSolver {
       const wb = b * k;
       const first = this.mfFirst[mf];
       const last = first + this.mfPoints[mf];
-      const pb = mf * PR * RS;
-      const rowCount = last - first + PR;
-      for (let r = 0; r < rowCount; r += 1) {
-        // points' normal rows, then the patch's tangent rows, then its twist rows
-        const point = r < last - first;
-        const pr = r - (last - first);
-        const rows = point ? this.rows : this.patchRows;
-        const base = point ? (first + r) * RS : pb + pr * RS;
-        const lambda = point ? this.lambdaN[first + r] : pr < m ? this.lambdaP[mf * m + pr] : this.lambdaW[mf * q + pr - m];
+      const rows = this.rows;
+      for (let cp = first; cp < last; cp += 1) {
+        const lambda = this.lambdaN[cp];
         if (lambda === 0) continue;
-        if (point || pr < m) {
+        const base = cp * RS;
+        const la = lambda * ima;
+        const lb = lambda * imb;
+        for (let d = 0; d < n; d += 1) {
+          const dir = rows[base + d];
+          V[va + d] -= la * dir;
+          V[vb + d] += lb * dir;
+        }
+        for (let pl = 0; pl < k; pl += 1) {
+          W[wa + pl] -= lambda * rows[base + iA + pl];
+          W[wb + pl] += lambda * rows[base + iB + pl];
+        }
+      }
+      // the patch: tangent rows (linear and angular), then twist rows (angular only)
+      const patch = this.patchRows;
+      for (let r = 0; r < PR; r += 1) {
+        const lambda = r < m ? this.lambdaP[mf * m + r] : this.lambdaW[mf * q + r - m];
+        if (lambda === 0) continue;
+        const base = (mf * PR + r) * RS;
+        if (r < m) {
           const la = lambda * ima;
           const lb = lambda * imb;
           for (let d = 0; d < n; d += 1) {
-            const dir = rows[base + d];
+            const dir = patch[base + d];
             V[va + d] -= la * dir;
             V[vb + d] += lb * dir;
           }
         }
         for (let pl = 0; pl < k; pl += 1) {
-          W[wa + pl] -= lambda * rows[base + iA + pl];
-          W[wb + pl] += lambda * rows[base + iB + pl];
+          W[wa + pl] -= lambda * patch[base + iA + pl];
+          W[wb + pl] += lambda * patch[base + iB + pl];
         }
       }
     }

@@ -218,13 +218,13 @@ export class ContactSolver {
       let big = 0;
       for (let d = 1; d < n; d += 1) if (Math.abs(N[d]) > Math.abs(N[big])) big = d;
       const sgn = N[big] >= 0 ? 1 : -1;
-      const uu = 2 + 2 * Math.abs(N[big]);
+      const twoOverUU = 2 / (2 + 2 * Math.abs(N[big])); // one division, not n²
       for (let t = 0, col = 0; col < n; col += 1) {
         if (col === big) continue;
-        const uc = N[col];
+        const uc = N[col] * twoOverUU;
         for (let d = 0; d < n; d += 1) {
           const ud = d === big ? N[d] + sgn : N[d];
-          tangents[t * n + d] = (d === col ? 1 : 0) - (2 * ud * uc) / uu;
+          tangents[t * n + d] = (d === col ? 1 : 0) - ud * uc;
         }
         t += 1;
       }

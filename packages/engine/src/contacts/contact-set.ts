@@ -3,8 +3,9 @@
  * order of the pair key so every pass over them is deterministic.
  *
  * A slot holds the pair's manifold (refreshed by the narrowphase every sub-step while one of the
- * two bodies is awake), the impulses of the last solve per manifold point (matched by feature id
- * so the solver can warm-start them), the mixed material and the touching state that drives the
+ * two bodies is awake), the normal impulses of the last solve per manifold point (matched by
+ * feature id, else by position, so the solver can warm-start them), the friction patch's impulses
+ * per pair, the mixed material and the touching state that drives the
  * begin / end events. The set follows the broadphase: `applyPairChanges` merges its sorted lists
  * of added and removed pairs into the sorted key list, so no hashing is involved and nothing is
  * allocated once the arrays have grown to the scene.

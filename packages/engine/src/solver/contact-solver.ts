@@ -300,7 +300,9 @@ export class ContactSolver {
           this.buildTwistRow(patch, base, t1, t2, a, b, sb);
           let s2 = 0;
           for (let pl = 0; pl < k; pl += 1) s2 += contacts.patchTwist[wi + pl] * patch[base + n + pl];
-          this.lambdaW[mf * q + w] = warm ? s2 : 0;
+          // A patch of one point (R = 0) has no twist friction: nothing of an older patch's twist
+          // may be warm-started into it, since no pass would ever clamp it again.
+          this.lambdaW[mf * q + w] = warm && radius > 0 ? s2 : 0;
         }
       }
     }

@@ -109,6 +109,8 @@ export class ContactSet {
   private readonly oldPoints: Float64Array;
   /** Per old point: 1 once a new point took its impulses. */
   private readonly oldTaken: Uint8Array;
+  /** Per new point: 1 once it took an old point's impulses by id. */
+  private readonly newMatched: Uint8Array;
   /** Box–box manifolds kept while the two boxes hardly move relative to each other. */
   private readonly cache: ManifoldCache;
   /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
@@ -127,6 +129,7 @@ export class ContactSet {
     this.oldApproach = new Float64Array(this.pointCapacity);
     this.oldPoints = new Float64Array(this.pointCapacity * n);
     this.oldTaken = new Uint8Array(this.pointCapacity);
+    this.newMatched = new Uint8Array(this.pointCapacity);
     this.cache = new ManifoldCache(n, this.pointCapacity);
     this.ensureSlots(16);
   }
@@ -381,12 +384,14 @@ export class ContactSet {
       else this.cache.forget(slot);
       let touching = false;
       oldTaken.fill(0, 0, oldCount);
+      const newMatched = this.newMatched;
       let unmatched = 0;
       for (let p = 0; p < m.count; p += 1) {
         if (m.separations[p] < margin) touching = true;
         const id = m.ids[p];
         let q = 0;
         while (q < oldCount && oldIds[q] !== id) q += 1;
+        newMatched[p] = q < oldCount ? 1 : 0;
         if (q < oldCount) this.carryImpulses(ni + p, q);
         else unmatched += 1;
       }
@@ -398,13 +403,10 @@ export class ContactSet {
         const reach2 = margin * margin;
         const pts = m.points;
         for (let p = 0; p < m.count; p += 1) {
-          const id = m.ids[p];
-          let q = 0;
-          while (q < oldCount && oldIds[q] !== id) q += 1;
-          if (q < oldCount) continue; // matched by id above (ids are unique in a manifold)
+          if (newMatched[p]) continue;
           let best = -1;
           let bestD2 = reach2;
-          for (q = 0; q < oldCount; q += 1) {
+          for (let q = 0; q < oldCount; q += 1) {
             if (oldTaken[q]) continue;
             let d2 = 0;
             for (let c = 0; c < n; c += 1) {

@@ -49,6 +49,9 @@ import type { JointOwner } from './joints/joint.js';
 import { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams } from './params.js';
 import type { Params } from './params.js';
+import { readWorldSnapshot } from './snapshot/read-world.js';
+import { writeWorldSnapshot } from './snapshot/write-world.js';
+import type { WorldParts } from './snapshot/world-parts.js';
 
 /** Options of `new World(options)`. */
 export interface WorldOptions {
@@ -145,7 +148,7 @@ export class World {
   private readonly gravityValue: Float64Array;
   private readonly bodyList: Body[] = [];
   private bodyView: readonly Body[] = Object.freeze([]);
-  private readonly snapshot: StepSnapshot;
+  private readonly stepState: StepSnapshot;
   private readonly scratch: WorldScratch;
   /** The scalars of the current sub-step, see `step-constants.ts`. */
   private readonly constants: Float64Array;
@@ -224,7 +227,7 @@ export class World {
     this.currentParams = params;
     this.gravityValue = new Float64Array(D.n);
     if (options.gravity !== undefined) this.gravityValue.set(options.gravity);
-    this.snapshot = createStepSnapshot(Body.stateLength(D));
+    this.stepState = createStepSnapshot(Body.stateLength(D));
     this.scratch = {
       rotor: createRotorStepScratch(D),
       bivector: new Float64Array(D.k),
@@ -345,7 +348,7 @@ export class World {
     if (finite !== 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is so far from the origin that its bounding box overflows`);
     }
-    reserveStepSnapshot(this.snapshot, this.bodyList.length + 1);
+    reserveStepSnapshot(this.stepState, this.bodyList.length + 1);
     this.reach = growFloat64(this.reach, this.bodyList.length + 1);
     body.owner = this.owner;
     body.worldIndex = this.bodyList.length;
@@ -512,7 +515,7 @@ export class World {
     c[STEP_ROTOR_ITERATIONS] = p.gyroscopic ? p.gyroscopicIterations : 0;
     c[STEP_LINEAR_SCALE] = p.linearDamping > 0 ? 1 / (1 + h * p.linearDamping) : 1;
     c[STEP_ANGULAR_SCALE] = p.angularDamping > 0 ? 1 / (1 + h * p.angularDamping) : 1;
-    saveStepState(this.snapshot, bodies);
+    saveStepState(this.stepState, bodies);
     this.events.clear();
     for (let s = 0; s < subSteps; s += 1) {
       integrateVelocities(D, bodies, this.gravityValue, c, this.scratch.bivector);
@@ -541,6 +544,55 @@ export class World {
     if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
     if (this.brokenJoints.length > 0) this.dispatchBroken();
     return this;
+  }
+
+  // ---- snapshots (see snapshot/ and docs/engine.md, "Snapshots") ----
+
+  /**
+   * The whole state a step reads, as bytes: dimension, parameters, gravity, time and step count,
+   * the shapes, every body (its full state, mass, material, sleep state), every joint (options,
+   * anchors, accumulated impulses), the contacts with their warm-start impulses and cached
+   * manifolds, the broadphase's pair bookkeeping and the end events pending for the next step.
+   * {@link World.restore} rebuilds a world from it that continues bit-identically: every Float64
+   * of every body after any number of steps is the same as the original's. Taking a snapshot
+   * changes nothing in the world.
+   *
+   * Not saved: listeners (functions), and the events of the last step (`contactEvents` of a
+   * restored world is empty until its first step).
+   *
+   * @throws Error if a body has a shape kind the snapshot code does not know (it names the kind).
+   */
+  snapshot(): Uint8Array {
+    return writeWorldSnapshot(this, this.snapshotParts());
+  }
+
+  /**
+   * Rebuilds a world from the bytes of {@link World.snapshot}. Its bodies and joints are new
+   * objects, in the same order as in the original: `restored.bodies[i]` is the copy of
+   * `original.bodies[i]`, `restored.constraints[j]` of `original.constraints[j]` (ids differ: they
+   * are unique per process).
+   *
+   * @throws TypeError if `bytes` is not a Uint8Array; RangeError, naming 'bytes', if it is
+   *   truncated, foreign, of another format version, damaged, or inconsistent.
+   */
+  static restore(bytes: Uint8Array): World {
+    return readWorldSnapshot(bytes, (options) => new World(options));
+  }
+
+  /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
+  snapshotParts(): WorldParts {
+    return {
+      clock: this.clock,
+      reach: this.reach,
+      boundsStale: this.boundsStale,
+      broadphase: this.broadphase as BroadphaseBase,
+      bodyOfProxy: this.bodyOfProxy,
+      contacts: this.contacts,
+      events: this.events,
+      setBoundsStale: (stale: boolean): void => {
+        this.boundsStale = stale;
+      },
+    };
   }
 
   // ---- the stages behind step() ----
@@ -830,7 +882,7 @@ export class World {
   /** Undoes the current step and throws the error that names the body. */
   private failStep(body: Body, subStep: number, subSteps: number): never {
     const field = firstNonFiniteField(body) ?? 'x';
-    restoreStepState(this.snapshot, this.bodyList);
+    restoreStepState(this.stepState, this.bodyList);
     throw new NonFiniteStateError(body, field, subStep, subSteps);
   }
 }

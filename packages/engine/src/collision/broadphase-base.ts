@@ -43,6 +43,29 @@ const ID_LIMIT = KEY_SCALE;
 /** How many moves ahead a fattened box reaches along the last move (Box2D v2 uses 4). */
 const PREDICTION = 4;
 
+/**
+ * @internal Everything that decides a broadphase's next updates, for world snapshots
+ * (snapshot/broadphase.ts): the proxy arrays up to `highWater` (boxes n numbers per id), the
+ * pending moved list, the half-space list, the free-id stack and the sorted pair keys, in their
+ * order. The box structure (the tree) is not part of it: it is rebuilt from the fat boxes, and
+ * the pairs it finds are sorted before use, so its shape never shows in the results.
+ */
+export interface BroadphaseState {
+  readonly highWater: number;
+  readonly liveCount: number;
+  readonly flags: Uint8Array;
+  readonly tightMin: Float64Array;
+  readonly tightMax: Float64Array;
+  readonly fatMin: Float64Array;
+  readonly fatMax: Float64Array;
+  readonly planeNormal: Float64Array;
+  readonly planeOffset: Float64Array;
+  readonly moved: Int32Array;
+  readonly halfSpaces: Int32Array;
+  readonly freeIds: Int32Array;
+  readonly keys: Float64Array;
+}
+
 export abstract class BroadphaseBase implements Broadphase {
   readonly n: number;
   readonly margin: number;
@@ -501,6 +524,70 @@ export abstract class BroadphaseBase implements Broadphase {
   private pushDropped(src: Float64Array, at: number): void {
     if (this.droppedCount === this.dropped.length) this.dropped = growF64(this.dropped, this.droppedCount);
     this.dropped[this.droppedCount++] = src[at]!;
+  }
+
+  // ---- snapshots ----
+
+  /** @internal The state that decides the next updates (views of the live parts, not copies). */
+  snapshotState(): BroadphaseState {
+    const hw = this.highWater;
+    const n = this.n;
+    return {
+      highWater: hw,
+      liveCount: this.liveCount,
+      flags: this.flags.subarray(0, hw),
+      tightMin: this.tightMin.subarray(0, hw * n),
+      tightMax: this.tightMax.subarray(0, hw * n),
+      fatMin: this.fatMin.subarray(0, hw * n),
+      fatMax: this.fatMax.subarray(0, hw * n),
+      planeNormal: this.planeNormal.subarray(0, hw * n),
+      planeOffset: this.planeOffset.subarray(0, hw),
+      moved: this.moved.subarray(0, this.movedCount),
+      halfSpaces: this.halfSpaces.subarray(0, this.halfSpaceCount),
+      freeIds: this.freeIds.subarray(0, this.freeCount),
+      keys: this.keys.subarray(0, this.keyCount),
+    };
+  }
+
+  /**
+   * @internal Replaces the whole state by `s` (as {@link snapshotState} gives it; the caller
+   * checked its consistency) and rebuilds the box structure from the fat boxes. Copies.
+   */
+  restoreState(s: BroadphaseState): void {
+    for (let id = 0; id < this.highWater; id += 1) {
+      if ((this.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) this.onRemove(id);
+    }
+    while (this.capacity < s.highWater) this.grow();
+    this.flags.fill(0);
+    this.flags.set(s.flags);
+    this.tightMin.set(s.tightMin);
+    this.tightMax.set(s.tightMax);
+    this.fatMin.set(s.fatMin);
+    this.fatMax.set(s.fatMax);
+    this.planeNormal.set(s.planeNormal);
+    this.planeOffset.set(s.planeOffset);
+    this.highWater = s.highWater;
+    this.liveCount = s.liveCount;
+    if (this.moved.length < s.moved.length) this.moved = new Int32Array(growLength(this.moved.length, s.moved.length));
+    this.moved.set(s.moved);
+    this.movedCount = s.moved.length;
+    if (this.halfSpaces.length < s.halfSpaces.length) this.halfSpaces = new Int32Array(growLength(this.halfSpaces.length, s.halfSpaces.length));
+    this.halfSpaces.set(s.halfSpaces);
+    this.halfSpaceCount = s.halfSpaces.length;
+    this.freeIds.set(s.freeIds);
+    this.freeCount = s.freeIds.length;
+    if (this.keys.length < s.keys.length) {
+      this.keys = new Float64Array(growLength(this.keys.length, s.keys.length));
+      this.keysNext = new Float64Array(this.keys.length);
+    }
+    this.keys.set(s.keys);
+    this.keyCount = s.keys.length;
+    this.pairCount = 0;
+    this.addedCount = 0;
+    this.removedCount = 0;
+    for (let id = 0; id < s.highWater; id += 1) {
+      if ((this.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) this.onInsert(id);
+    }
   }
 
   // ---- queries ----

@@ -95,6 +95,14 @@ export class ContactEvents {
   }
 
   /**
+   * @internal The end events recorded for the next step (pushEndLater), for world snapshots:
+   * `count` pairs (a[i], b[i]).
+   */
+  pendingEnds(): { readonly count: number; readonly a: readonly Body[]; readonly b: readonly Body[] } {
+    return { count: this.laterCount, a: this.laterA, b: this.laterB };
+  }
+
+  /**
    * Records that the bodies of contact `slot` began touching, with the deepest point of their
    * manifold and its total normal impulse.
    */

@@ -266,6 +266,23 @@ export class ContactSet {
     this.count = o;
   }
 
+  /** @internal The manifold cache of the slots, for world snapshots (snapshot/contacts.ts). */
+  get manifoldCache(): ManifoldCache {
+    return this.cache;
+  }
+
+  /**
+   * @internal For restoring a snapshot into an empty set: makes `count` live slots, handed out
+   * as a new set hands them out (0, 1, 2, …), listed in `order` in that order. The caller then
+   * fills every per-slot field.
+   */
+  takeSlots(count: number): void {
+    if (this.count !== 0) throw new Error('ContactSet.takeSlots: the set must be empty');
+    this.ensureSlots(count);
+    for (let i = 0; i < count; i += 1) this.order[i] = this.allocSlot();
+    this.count = count;
+  }
+
   /** Forgets the friction patch of `slot` (a new contact, or one whose points all changed). */
   private clearPatch(slot: number): void {
     this.patchTangent.fill(0, slot * this.n, (slot + 1) * this.n);

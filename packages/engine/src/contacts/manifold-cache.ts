@@ -62,6 +62,31 @@ export class ManifoldCache {
     this.normal = growFloat64(this.normal, capacity * n);
   }
 
+  /** @internal Whether the slot holds a cached manifold (for world snapshots). */
+  isValid(slot: number): boolean {
+    return this.valid[slot] === 1;
+  }
+
+  /**
+   * @internal Views of the slot's cached data, for world snapshots: B's pose in A's frame
+   * (n + n² numbers), the normal in A's frame (n) and the surface points (2n per point, P points).
+   */
+  slotViews(slot: number): { pose: Float64Array; normal: Float64Array; local: Float64Array } {
+    const n = this.n;
+    const m = n + n * n;
+    const L = this.P * 2 * n;
+    return {
+      pose: this.pose.subarray(slot * m, slot * m + m),
+      normal: this.normal.subarray(slot * n, slot * n + n),
+      local: this.local.subarray(slot * L, slot * L + L),
+    };
+  }
+
+  /** @internal Marks the slot's cache as holding a manifold (its views written first), for snapshots. */
+  markValid(slot: number): void {
+    this.valid[slot] = 1;
+  }
+
   /** Drops the cached manifold of a slot. */
   forget(slot: number): void {
     this.valid[slot] = 0;

@@ -1,0 +1,379 @@
+/**
+ * Engine snapshots: `world.snapshot()` and `World.restore(bytes)`.
+ *
+ * The key property: a restored world continued for 600 steps is bit-identical to the original
+ * continued for 600 steps — every Float64 of every body's record (x, R, v, L, w, force, torque),
+ * its sleep flag and timer, compared after every step. Scenes (gravity −9.81 e_1, dt 1/60, sleep
+ * on): in 3D and 4D a ground half-space with friction, a stack of hypercubes, tumbling boxes and
+ * hyperspheres, a torus and a convex mesh, a kinematic box, and every joint type — a soft point
+ * joint, a rope, a rod, a weld of two boxes, a hinge with motor and limits, a breakable hinge whose
+ * motor drives it into its limit until it breaks, a subspace joint. Snapshots are taken mid-fall,
+ * just after the joint broke, and at rest (bodies asleep). In 2D and 5D: free bodies and a simple
+ * contact (boxes and balls on the ground).
+ *
+ * Also: the snapshot of a restored world has the same bytes as the original's at the same moment;
+ * taking snapshots does not change the world; a body removed just before the snapshot still gets
+ * its pending end event; truncated, foreign, damaged and wrong-version buffers throw errors that
+ * name 'bytes'.
+ */
+import { describe, expect, it } from 'vitest';
+import {
+  Body,
+  ConvexMesh,
+  DistanceJoint,
+  FixedJoint,
+  HalfSpace,
+  HingeJoint,
+  HyperBox,
+  HyperSphere,
+  HyperTorus,
+  PointJoint,
+  SubspaceJoint,
+  World,
+} from '@physin/engine';
+import type { Joint } from '@physin/engine';
+import { cubeBoundary } from './support/meshes.js';
+import { seeded, uniform } from './support/random.js';
+import { axis, gravity } from './support/scenes.js';
+
+const DT = 1 / 60;
+const CONTINUE = 600;
+
+/** Every body's record, sleep flag and sleep timer, as one array (compared bit for bit). */
+function stateOf(world: World): Float64Array {
+  const parts: number[] = [];
+  for (const body of world.bodies) {
+    const len = Body.recordLength(world.D);
+    for (let i = 0; i < len; i += 1) parts.push(body.storage[body.storageOffset + i]!);
+    parts.push(body.isSleeping ? 1 : 0, body.sleepTimer);
+  }
+  parts.push(world.time, world.stepCount);
+  return Float64Array.from(parts);
+}
+
+/** Index of the first Float64 whose bits differ, or -1. */
+function firstDifference(a: Float64Array, b: Float64Array): number {
+  if (a.length !== b.length) return Math.min(a.length, b.length);
+  const ua = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
+  const ub = new Uint8Array(b.buffer, b.byteOffset, b.byteLength);
+  for (let i = 0; i < ua.length; i += 1) if (ua[i] !== ub[i]) return i >> 3;
+  return -1;
+}
+
+function expectSameBytes(a: Uint8Array, b: Uint8Array, label: string): void {
+  expect(a.length, `${label}: length`).toBe(b.length);
+  let first = -1;
+  for (let i = 0; i < a.length && first < 0; i += 1) if (a[i] !== b[i]) first = i;
+  expect(first, `${label}: first differing byte`).toBe(-1);
+}
+
+/** Steps both worlds `steps` times and checks after every step that their states are bit-identical. */
+function expectSameContinuation(a: World, b: World, steps: number, label: string): void {
+  for (let s = 1; s <= steps; s += 1) {
+    a.step(DT);
+    b.step(DT);
+    const d = firstDifference(stateOf(a), stateOf(b));
+    if (d >= 0) expect.fail(`${label}: state differs after ${s} continued steps at Float64 ${d}`);
+  }
+  expect(a.constraints.length).toBe(b.constraints.length);
+  expect(a.contactCount).toBe(b.contactCount);
+  expect(a.touchingCount).toBe(b.touchingCount);
+}
+
+interface Scene {
+  world: World;
+  breakable: Joint;
+  stackTop: Body;
+}
+
+/**
+ * The rich scene in n = 3 or 4 (see the module). Deterministic: the same n gives the same world.
+ */
+function richScene(n: number): Scene {
+  const world = new World({ dimensions: n, gravity: gravity(n), params: { allowSleep: true } });
+  const D = world.D;
+  const rand = seeded(1234 + n);
+  const at = (...lead: number[]): number[] => {
+    const p = new Array<number>(n).fill(0);
+    lead.forEach((v, i) => {
+      if (i < n) p[i] = v;
+    });
+    return p;
+  };
+  world.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0, material: { friction: 0.6 }, name: 'ground' }));
+  // A stack of hypercubes (sleeps once settled).
+  const cube = HyperBox(D, new Array<number>(n).fill(0.25));
+  let stackTop: Body | null = null;
+  for (let i = 0; i < 4; i += 1) {
+    stackTop = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(0, 0.25 + 0.5 * i + 0.01 * i), name: `stack${i}` }));
+  }
+  // Tumbling boxes and balls.
+  for (let i = 0; i < 5; i += 1) {
+    const rotor = new Float64Array(D.r);
+    rotor[0] = 1;
+    const w = Array.from({ length: D.k }, () => uniform(rand, -2, 2));
+    const shape = i % 2 === 0 ? HyperBox(D, Array.from({ length: n }, () => uniform(rand, 0.15, 0.35))) : HyperSphere(uniform(rand, 0.15, 0.3));
+    world.addBody(
+      new Body(D, {
+        shape,
+        mass: uniform(rand, 0.5, 2),
+        position: at(2 + 0.8 * i, 1 + 0.7 * i, uniform(rand, -0.3, 0.3)),
+        angularVelocity: w,
+        velocity: at(uniform(rand, -1, 1), 0, uniform(rand, -0.5, 0.5)),
+        material: { friction: uniform(rand, 0.2, 0.8), restitution: i === 1 ? 0.4 : 0 },
+      }),
+    );
+  }
+  // A torus and a convex mesh.
+  world.addBody(new Body(D, { shape: HyperTorus(D, 0.4, 0.1, [0, 2]), mass: 1, position: at(-2, 1.5, 0.5), angularVelocity: Array.from({ length: D.k }, (_, p) => (p === 1 ? 1 : 0)) }));
+  const mesh = cubeBoundary(n, new Array<number>(n).fill(0.2).map((a, c) => a + 0.05 * c));
+  world.addBody(new Body(D, { shape: ConvexMesh(D, mesh.vertices, mesh.facets), mass: 1.5, position: at(-2, 3, -0.5), angularVelocity: Array.from({ length: D.k }, (_, p) => 0.3 * (p + 1)) }));
+  // A kinematic box sliding along the ground, pushing what it meets.
+  world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.3)), type: 'kinematic', mass: 0, position: at(6, 0.3, 0), velocity: at(-0.5) }));
+
+  // Joints: a soft point joint with a rope to a second ball.
+  const bob = world.addBody(new Body(D, { shape: HyperSphere(0.15), mass: 1, position: at(-4, 3, 0), velocity: at(0, 0, 1) }));
+  world.addConstraint(new PointJoint(bob, null, at(0, 0.5), at(-4, 3.5, 0), { hertz: 4, damping: 0.3 }));
+  const bob2 = world.addBody(new Body(D, { shape: HyperSphere(0.1), mass: 0.5, position: at(-4.5, 2.2, 0) }));
+  world.addConstraint(new DistanceJoint(bob, bob2, at(), at(), { mode: 'rope', rest: 0.9 }));
+  // A rod from the second ball to a box, which lies on the ground.
+  const rodBox = world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.15)), mass: 1, position: at(-4.5, 0.6, 0.4) }));
+  world.addConstraint(new DistanceJoint(bob2, rodBox, at(), at(0.15, 0.15), { mode: 'rod' }));
+  // A weld of two boxes falling on the ground.
+  const w1 = world.addBody(new Body(D, { shape: HyperBox(D, at(0.3, 0.1, 0.2, 0.2).map((v) => v || 0.2)), mass: 1, position: at(4, 2.5, -1) }));
+  const w2 = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(4.5, 2.8, -1) }));
+  world.addConstraint(new FixedJoint(w1, w2, at(0.3, 0.1), at(-0.2, -0.2), { breakForce: 1e6 }));
+  // A wheel on a hinge with motor and limits (held), and a breakable one driven into its limit.
+  const wheel = world.addBody(new Body(D, { shape: HyperBox(D, at(0.5, 0.1, 0.1, 0.1).map((v) => v || 0.1)), mass: 2, position: at(0, 4, 2) }));
+  world.addConstraint(new HingeJoint(wheel, null, at(), at(0, 4, 2), { plane: 0, motorSpeed: 1.5, maxMotorTorque: 5, lowerAngle: -0.5, upperAngle: 2, hertz: 30, damping: 1 }));
+  const lever = world.addBody(new Body(D, { shape: HyperBox(D, at(0.4, 0.05, 0.05, 0.05).map((v) => v || 0.05)), mass: 1, position: at(0, 4, -2) }));
+  const breakable = world.addConstraint(
+    new HingeJoint(lever, null, at(-0.4), at(-0.4, 4, -2), { plane: 0, motorSpeed: 3, maxMotorTorque: 80, upperAngle: 0.6, breakTorque: 40 }),
+  );
+  // A subspace joint: a box kept in the plane of axes 0 and 1 (turning only in it), sliding on the ground.
+  const slider = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(-1, 0.6, -2), velocity: at(1.5, 0, 2) }));
+  const freePlane = [0];
+  const lockAxes = [...Array(n).keys()].filter((c) => c >= 2);
+  world.addConstraint(new SubspaceJoint(slider, null, { lockAxes, freePlanes: freePlane, localA: at(), localB: at(0, 0, -2) }));
+  return { world, breakable, stackTop: stackTop! };
+}
+
+/** Runs the scene until `done()` or `limit` steps; returns the steps taken. */
+function runUntil(world: World, done: () => boolean, limit: number): number {
+  let s = 0;
+  while (s < limit && !done()) {
+    world.step(DT);
+    s += 1;
+  }
+  return s;
+}
+
+describe('snapshot and restore: bit-identical continuation, every joint type, 3D and 4D', () => {
+  for (const n of [3, 4]) {
+    it(`n = ${n}: mid-fall, just after a joint broke, and at rest`, () => {
+      // Mid-fall: the tumbling bodies in the air, the stack settling.
+      const { world, breakable } = richScene(n);
+      runUntil(world, () => false, 20);
+      expect(world.bodies.some((b) => b.v[1]! < -1), 'something falls').toBe(true);
+      const mid = World.restore(world.snapshot());
+      expectSameBytes(mid.snapshot(), world.snapshot(), `n = ${n}, mid-fall: snapshot of the restored world`);
+      expectSameContinuation(world, mid, CONTINUE, `n = ${n}, mid-fall`);
+      expect(breakable.broken, 'the breakable hinge broke within the continued steps').toBe(true);
+      expectSameBytes(mid.snapshot(), world.snapshot(), `n = ${n}, ${CONTINUE} steps after mid-fall`);
+
+      // Just after the break.
+      const second = richScene(n);
+      const steps = runUntil(second.world, () => second.breakable.broken, 600);
+      expect(second.breakable.broken, 'the breakable hinge breaks').toBe(true);
+      expect(steps).toBeGreaterThan(2);
+      const afterBreak = World.restore(second.world.snapshot());
+      expect(afterBreak.constraints.length).toBe(second.world.constraints.length);
+      expectSameContinuation(second.world, afterBreak, CONTINUE, `n = ${n}, after the break`);
+
+      // At rest: the stack asleep; the kinematic box later pushes the tumbled bodies into it and wakes it.
+      const third = richScene(n);
+      runUntil(third.world, () => third.world.stepCount >= 60 && third.stackTop.isSleeping, 500);
+      expect(third.stackTop.isSleeping, 'the stack sleeps').toBe(true);
+      const rest = World.restore(third.world.snapshot());
+      const top = rest.bodies[third.world.bodies.indexOf(third.stackTop)]!;
+      expect(top.isSleeping).toBe(true);
+      expectSameContinuation(third.world, rest, CONTINUE, `n = ${n}, at rest`);
+      expect(top.isSleeping, 'the stack was woken by the pushed bodies').toBe(false);
+      // A snapshot of a restored world restores to the same bytes again.
+      const again = World.restore(rest.snapshot());
+      expectSameBytes(again.snapshot(), third.world.snapshot(), `n = ${n}, restored twice`);
+    });
+  }
+});
+
+describe('snapshot and restore: free bodies and a simple contact, n = 2 and 5', () => {
+  for (const n of [2, 5]) {
+    it(`n = ${n}`, () => {
+      const world = new World({ dimensions: n, gravity: gravity(n), params: { allowSleep: true } });
+      const D = world.D;
+      const rand = seeded(99 + n);
+      world.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0, material: { friction: 0.5 } }));
+      for (let i = 0; i < 4; i += 1) {
+        const p = new Array<number>(n).fill(0);
+        p[0] = 1.2 * i;
+        p[1] = 0.6 + 0.9 * i;
+        world.addBody(
+          new Body(D, {
+            shape: i % 2 === 0 ? HyperBox(D, new Array<number>(n).fill(0.25)) : HyperSphere(0.3),
+            mass: 1 + i,
+            position: p,
+            angularVelocity: Array.from({ length: D.k }, () => uniform(rand, -3, 3)),
+            velocity: Array.from({ length: n }, () => uniform(rand, -1, 1)),
+          }),
+        );
+      }
+      // A free body far from everything, with no gravity acting on its spin: a torque-free tumble.
+      const far = new Array<number>(n).fill(50);
+      world.addBody(new Body(D, { shape: HyperBox(D, Array.from({ length: n }, (_, c) => 0.1 + 0.1 * c)), mass: 1, position: far, angularVelocity: Array.from({ length: D.k }, (_, p) => 1 + p) }));
+      world.step(DT);
+      const restored = World.restore(world.snapshot());
+      expectSameContinuation(world, restored, CONTINUE, `n = ${n}`);
+      expect(world.touchingCount).toBeGreaterThan(0);
+      expectSameBytes(world.snapshot(), restored.snapshot(), `n = ${n}, after ${CONTINUE} steps`);
+    });
+  }
+});
+
+describe('snapshot is read-only and restore keeps the order', () => {
+  it('taking snapshots does not change the world (3D rich scene)', () => {
+    const a = richScene(3).world;
+    const b = richScene(3).world;
+    for (let s = 0; s < 300; s += 1) {
+      a.step(DT);
+      b.step(DT);
+      if (s % 7 === 0) a.snapshot();
+    }
+    expect(firstDifference(stateOf(a), stateOf(b))).toBe(-1);
+    expectSameBytes(a.snapshot(), b.snapshot(), 'after 300 steps');
+  });
+
+  it('a restored world lists its bodies and joints in the original order', () => {
+    const { world } = richScene(4);
+    world.step(DT);
+    const restored = World.restore(world.snapshot());
+    world.bodies.forEach((body, i) => {
+      const copy = restored.bodies[i]!;
+      expect(copy).not.toBe(body);
+      expect(Array.from(copy.x)).toEqual(Array.from(body.x));
+      expect(copy.mass).toBe(body.mass);
+      expect(copy.material).toEqual(body.material);
+    });
+    world.constraints.forEach((joint, j) => {
+      const copy = restored.constraints[j]!;
+      expect(copy.constructor).toBe(joint.constructor);
+      expect(restored.bodies.indexOf(copy.bodyA)).toBe(world.bodies.indexOf(joint.bodyA));
+      expect(Array.from(copy.lambda)).toEqual(Array.from(joint.lambda));
+    });
+  });
+
+  it('a body removed before the snapshot still ends its contact at the next step', () => {
+    const { world, stackTop } = richScene(3);
+    for (let s = 0; s < 90; s += 1) world.step(DT);
+    world.removeBody(stackTop);
+    const restored = World.restore(world.snapshot());
+    world.step(DT);
+    restored.step(DT);
+    expect(world.contactEvents.endCount).toBeGreaterThan(0);
+    expect(restored.contactEvents.endCount).toBe(world.contactEvents.endCount);
+    const ev = world.contactEvents;
+    const rv = restored.contactEvents;
+    for (let i = 0; i < ev.endCount; i += 1) {
+      for (const [x, y] of [
+        [ev.endA[i]!, rv.endA[i]!],
+        [ev.endB[i]!, rv.endB[i]!],
+      ] as const) {
+        const index = world.bodies.indexOf(x);
+        if (index >= 0) expect(restored.bodies.indexOf(y)).toBe(index);
+        else {
+          expect(x).toBe(stackTop);
+          expect(restored.bodies.includes(y)).toBe(false);
+          expect(Array.from(y.x)).toEqual(Array.from(x.x));
+        }
+      }
+    }
+    expectSameContinuation(world, restored, 200, 'after the removal');
+  });
+
+  it('a world with bodies removed and added again keeps its proxy ids and continues identically', () => {
+    const { world } = richScene(3);
+    for (let s = 0; s < 30; s += 1) world.step(DT);
+    const moved = world.bodies[6]!;
+    world.removeBody(moved);
+    world.step(DT);
+    const restored = World.restore(world.snapshot());
+    // The removed body goes back into both worlds: it must get the same (reused) proxy id.
+    world.addBody(moved);
+    const copy = new Body(restored.D, { shape: moved.shape, mass: moved.mass, position: moved.x, rotor: moved.R, velocity: moved.v, material: moved.material });
+    copy.storage.set(moved.storage.subarray(moved.storageOffset, moved.storageOffset + Body.recordLength(world.D)), copy.storageOffset);
+    restored.addBody(copy);
+    expect(copy.proxyId).toBe(moved.proxyId);
+    expectSameContinuation(world, restored, 300, 'after re-adding');
+  });
+});
+
+describe('restore refuses bad bytes, naming the argument', () => {
+  const { world } = richScene(3);
+  world.step(DT);
+  const good = world.snapshot();
+
+  it('accepts the good bytes, also as a view into a larger buffer', () => {
+    const big = new Uint8Array(good.length + 16);
+    big.set(good, 8);
+    const restored = World.restore(big.subarray(8, 8 + good.length));
+    expectSameBytes(restored.snapshot(), good, 'restored from a view');
+  });
+
+  it('TypeError for a value that is not a Uint8Array', () => {
+    for (const bad of [null, undefined, 'bytes', [1, 2, 3], good.buffer, new Float64Array(4)]) {
+      expect(() => World.restore(bad as unknown as Uint8Array)).toThrow(TypeError);
+      expect(() => World.restore(bad as unknown as Uint8Array)).toThrow(/'bytes'/);
+    }
+  });
+
+  it('RangeError for a truncated buffer, at any length', () => {
+    for (const length of [0, 3, 15, 16, 100, good.length >> 1, good.length - 1]) {
+      expect(() => World.restore(good.slice(0, length)), `length ${length}`).toThrow(RangeError);
+      expect(() => World.restore(good.slice(0, length)), `length ${length}`).toThrow(/'bytes' is truncated/);
+    }
+  });
+
+  it('RangeError for a foreign buffer, a damaged one, extra bytes and another version', () => {
+    const foreign = new Uint8Array(256).map((_, i) => (i * 37) & 255);
+    expect(() => World.restore(foreign)).toThrow(/'bytes' is not a PhysiN world snapshot/);
+    const damaged = good.slice();
+    damaged[good.length >> 1] ^= 1;
+    expect(() => World.restore(damaged)).toThrow(RangeError);
+    expect(() => World.restore(damaged)).toThrow(/'bytes' is damaged/);
+    const longer = new Uint8Array(good.length + 4);
+    longer.set(good);
+    expect(() => World.restore(longer)).toThrow(/'bytes' has 4 bytes past the end/);
+    const other = good.slice();
+    new DataView(other.buffer).setUint32(4, 2, true);
+    expect(() => World.restore(other)).toThrow(RangeError);
+    expect(() => World.restore(other)).toThrow(/'bytes' is a snapshot of format version 2; this build reads version 1/);
+  });
+
+  it('RangeError naming bytes for a well-framed snapshot whose contents are inconsistent', async () => {
+    // Reframe a payload with a wrong dimension byte: the checksum passes, the contents do not.
+    const { fnv1a } = await import('../packages/engine/src/snapshot/format.js');
+    const bad = good.slice();
+    bad[16] = 9;
+    new DataView(bad.buffer).setUint32(12, fnv1a(bad, 16, bad.length), true);
+    expect(() => World.restore(bad)).toThrow(/'bytes' is not a valid snapshot: the dimension is 9/);
+  });
+});
+
+describe('snapshot refuses what it cannot rebuild', () => {
+  it('a shape kind it does not know is named', () => {
+    const world = new World({ dimensions: 3 });
+    const D = world.D;
+    const box = HyperBox(D, [0.5, 0.5, 0.5]);
+    world.addBody(new Body(D, { shape: { ...box, kind: 'capsule' } as unknown as typeof box, mass: 1 }));
+    expect(() => world.snapshot()).toThrow(/shape of kind 'capsule'/);
+  });
+});

@@ -302,17 +302,54 @@ describe('snapshot is read-only and restore keeps the order', () => {
   it('a world with bodies removed and added again keeps its proxy ids and continues identically', () => {
     const { world } = richScene(3);
     for (let s = 0; s < 30; s += 1) world.step(DT);
-    const moved = world.bodies[6]!;
-    world.removeBody(moved);
+    const gone = [world.bodies[6]!, world.bodies[7]!];
+    for (const body of gone) world.removeBody(body);
     world.step(DT);
     const restored = World.restore(world.snapshot());
-    // The removed body goes back into both worlds: it must get the same (reused) proxy id.
-    world.addBody(moved);
-    const copy = new Body(restored.D, { shape: moved.shape, mass: moved.mass, position: moved.x, rotor: moved.R, velocity: moved.v, material: moved.material });
-    copy.storage.set(moved.storage.subarray(moved.storageOffset, moved.storageOffset + Body.recordLength(world.D)), copy.storageOffset);
-    restored.addBody(copy);
-    expect(copy.proxyId).toBe(moved.proxyId);
+    // The removed bodies go back into both worlds: they must get the same (reused) proxy ids.
+    for (const body of gone) {
+      const ids = body.proxyId;
+      world.addBody(body);
+      const copy = new Body(restored.D, { shape: body.shape, mass: body.mass, material: body.material });
+      copy.storage.set(body.storage.subarray(body.storageOffset, body.storageOffset + Body.recordLength(world.D)), copy.storageOffset);
+      restored.addBody(copy);
+      expect(ids).toBe(-1);
+      expect(copy.proxyId).toBe(body.proxyId);
+    }
+    expect(gone[0]!.proxyId).not.toBe(gone[1]!.proxyId);
     expectSameContinuation(world, restored, 300, 'after re-adding');
+  });
+});
+
+describe('snapshot at every step of a bounce', () => {
+  it('a ball bouncing on the ground (restitution 0.9, speculative contacts): every moment continues identically', () => {
+    const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: true } });
+    const D = world.D;
+    world.addBody(new Body(D, { shape: HalfSpace(D, axis(3, 1), 0), mass: 0, material: { restitution: 0.9 } }));
+    world.addBody(new Body(D, { shape: HyperSphere(0.2), mass: 1, position: [0, 1.5, 0], velocity: [0.3, -6, 0], material: { restitution: 0.9, friction: 0.4 }, angularVelocity: [0, 2, 1] }));
+    world.addBody(new Body(D, { shape: HyperBox(D, [0.2, 0.2, 0.2]), mass: 1, position: [1.5, 1.2, 0], velocity: [0, -8, 0], material: { restitution: 0.7 } }));
+    const AHEAD = 3;
+    const states: Float64Array[] = [];
+    const snaps: Uint8Array[] = [];
+    for (let s = 0; s < 150; s += 1) {
+      snaps.push(world.snapshot());
+      states.push(stateOf(world));
+      world.step(DT);
+    }
+    states.push(stateOf(world));
+    let bounces = 0;
+    for (let s = 0; s + AHEAD < states.length; s += 1) {
+      const restored = World.restore(snaps[s]!);
+      for (let i = 0; i < AHEAD; i += 1) restored.step(DT);
+      const d = firstDifference(stateOf(restored), states[s + AHEAD]!);
+      if (d >= 0) expect.fail(`restored at step ${s}: differs ${AHEAD} steps later at Float64 ${d}`);
+      const before = states[s]!;
+      const after = states[s + 1]!;
+      // The ball is body 1: its record starts after body 0's (record + 2 numbers); v_1 follows x (3) and R (4).
+      const vy = Body.recordLength(D) + 2 + 3 + 4 + 1;
+      if (before[vy]! < 0 && after[vy]! > 0) bounces += 1;
+    }
+    expect(bounces, 'the ball bounced').toBeGreaterThanOrEqual(2);
   });
 });
 

@@ -239,6 +239,39 @@ describe('snapshot and restore: free bodies and a simple contact, n = 2 and 5', 
   }
 });
 
+describe('snapshot and restore: piles, where most broadphase pairs do not touch', () => {
+  for (const n of [3, 4]) {
+    it(`n = ${n}: a pile of jittered, turned boxes restored mid-fall and after landing`, () => {
+      const world = new World({ dimensions: n, gravity: gravity(n), params: { allowSleep: false } });
+      const D = world.D;
+      const rand = seeded(7 + n);
+      world.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0, material: { friction: 0.5 } }));
+      const cube = HyperBox(D, new Array<number>(n).fill(0.5));
+      const side = n === 3 ? 4 : 3;
+      const layers = 3;
+      const horizontal = [...Array(n).keys()].filter((a) => a !== 1);
+      const perLayer = side ** horizontal.length;
+      for (let i = 0; i < perLayer * layers; i += 1) {
+        const p = new Array<number>(n).fill(0);
+        let cell = i % perLayer;
+        for (const a of horizontal) {
+          p[a] = ((cell % side) - (side - 1) / 2) * 1.05 + uniform(rand, -0.2, 0.2);
+          cell = Math.floor(cell / side);
+        }
+        p[1] = 0.6 + 1.2 * Math.floor(i / perLayer) + uniform(rand, -0.1, 0.1);
+        world.addBody(new Body(D, { shape: cube, mass: 1, position: p, angularVelocity: Array.from({ length: D.k }, () => uniform(rand, -1, 1)) }));
+      }
+      for (const steps of [25, 150]) {
+        while (world.stepCount < steps) world.step(DT);
+        expect(world.contactCount).toBeGreaterThan(world.touchingCount);
+        const restored = World.restore(world.snapshot());
+        expectSameBytes(restored.snapshot(), world.snapshot(), `pile n = ${n} at ${steps}`);
+        expectSameContinuation(world, restored, 150, `pile n = ${n} from step ${steps}`);
+      }
+    });
+  }
+});
+
 describe('snapshot is read-only and restore keeps the order', () => {
   it('taking snapshots does not change the world (3D rich scene)', () => {
     const a = richScene(3).world;
@@ -318,6 +351,53 @@ describe('snapshot is read-only and restore keeps the order', () => {
     }
     expect(gone[0]!.proxyId).not.toBe(gone[1]!.proxyId);
     expectSameContinuation(world, restored, 300, 'after re-adding');
+  });
+});
+
+describe('snapshot between commands', () => {
+  it('pending forces and torques, a teleport, a wake, new parameters and gravity, a query: all carried', () => {
+    const { world } = richScene(4);
+    for (let s = 0; s < 240; s += 1) world.step(DT);
+    const D = world.D;
+    const sleeper = world.bodies.find((b) => b.isSleeping && b.type === 'dynamic')!;
+    expect(sleeper, 'a sleeping body').toBeDefined();
+    const mover = world.bodies.find((b) => !b.isSleeping && b.type === 'dynamic')!;
+    mover.applyForce([1, 5, 0, 2], [0.1, 0, 0.05, 0]);
+    mover.applyTorque(Array.from({ length: D.k }, (_, p) => 0.1 * p));
+    world.bodies[3]!.setPositionN([0.3, 3, 0.1, -0.2]);
+    sleeper.setLinearVelocity([0, 2, 0, 0]);
+    world.setParams({ iterations: 7, linearDamping: 0.05, manifoldReuseTolerance: 2e-4 });
+    world.setGravity([0.5, -9, 0, 0.1]);
+    world.rayCast([0, 10, 0, 0], [0, -1, 0, 0], 20);
+    const restored = World.restore(world.snapshot());
+    expect(restored.params).toEqual(world.params);
+    expect(Array.from(restored.gravity)).toEqual(Array.from(world.gravity));
+    expect(restored.time).toBe(world.time);
+    expect(restored.stepCount).toBe(world.stepCount);
+    expectSameContinuation(world, restored, CONTINUE, 'after commands');
+  });
+
+  it('shapes come back with the same fields and mass properties, a mesh included', () => {
+    const { world } = richScene(4);
+    const restored = World.restore(world.snapshot());
+    world.bodies.forEach((body, i) => {
+      const a = body.shape as unknown as Record<string, unknown>;
+      const b = restored.bodies[i]!.shape as unknown as Record<string, unknown>;
+      expect(Object.keys(b)).toEqual(Object.keys(a));
+      for (const key of Object.keys(a)) {
+        if (typeof a[key] === 'function' || key === 'colliders') continue;
+        expect(b[key], `${a.kind} field ${key}`).toEqual(a[key]);
+      }
+      expect(b.colliders).toBe(a.colliders);
+      if (body.mass > 0) {
+        const ma = body.shape.massProperties(world.D, 2.5);
+        const mb = restored.bodies[i]!.shape.massProperties(world.D, 2.5);
+        expect(Array.from(mb.inertia)).toEqual(Array.from(ma.inertia));
+        expect(mb.volume).toBe(ma.volume);
+      }
+    });
+    // Bodies sharing a shape share it after the restore too (one shape table entry).
+    expect(restored.bodies[1]!.shape).toBe(restored.bodies[2]!.shape);
   });
 });
 

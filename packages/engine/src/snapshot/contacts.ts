@@ -12,7 +12,10 @@
  *
  * Slot numbers are not saved: nothing computed depends on them (every pass walks `order`), and a
  * restored set hands out slots 0, 1, 2, … in order. The values past a manifold's point count are
- * not saved either: nothing reads them before they are written.
+ * not saved either, nor, for a pair whose manifold is empty (most broadphase pairs: fattened boxes
+ * that overlap while the bodies do not touch), its normal, friction patch and cache: nothing
+ * reads them before they are written (a manifold that gains points with none carried over clears
+ * its patch; an empty manifold is never cached). A restored set holds zeros there.
  *
  * @module
  */
@@ -41,6 +44,7 @@ export function writeContacts(w: SnapshotWriter, D: Dims, set: ContactSet, index
     w.f64(set.friction[slot]!);
     w.f64(set.restitution[slot]!);
     w.u32(c);
+    if (c === 0) continue; // an empty manifold: nothing else of the pair is read before it is written
     w.f64s(m.normal, 0, n);
     w.f64s(m.points, 0, c * n);
     w.f64s(m.separations, 0, c);
@@ -89,6 +93,7 @@ export function readContacts(r: SnapshotReader, D: Dims, set: ContactSet, bodies
     const m = set.manifolds[slot]!;
     const c = r.count('a manifold point count', P);
     m.count = c;
+    if (c === 0) continue;
     r.f64s(n, m.normal);
     r.f64s(c * n, m.points);
     r.f64s(c, m.separations);

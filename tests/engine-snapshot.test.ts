@@ -534,6 +534,22 @@ describe('restore refuses bad bytes, naming the argument', () => {
     bad[16] = 9;
     new DataView(bad.buffer).setUint32(12, fnv1a(bad, 16, bad.length), true);
     expect(() => World.restore(bad)).toThrow(/'bytes' is not a valid snapshot: the dimension is 9/);
+    // A huge shape count fails at once (no allocation of its items): find the count after the
+    // parameters, gravity, clock and flag, and set it to 2^25.
+    const view = new DataView(good.buffer);
+    let at = 17;
+    const params = view.getUint32(at, true);
+    at += 4;
+    for (let i = 0; i < params; i += 1) {
+      at += 4 + view.getUint32(at, true);
+      at += view.getUint8(at) === 1 ? 2 : 9;
+    }
+    at += 3 * 8 + 8 + 8 + 1;
+    expect(view.getUint32(at, true), 'the shape count').toBe(new Set(world.bodies.map((b) => b.shape)).size);
+    const huge = good.slice();
+    new DataView(huge.buffer).setUint32(at, 1 << 25, true);
+    new DataView(huge.buffer).setUint32(12, fnv1a(huge, 16, huge.length), true);
+    expect(() => World.restore(huge)).toThrow(/'bytes' is truncated: the shape count is 33554432/);
   });
 });
 

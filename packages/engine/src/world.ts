@@ -555,7 +555,8 @@ export class World {
    * manifolds, the broadphase's pair bookkeeping and the end events pending for the next step.
    * {@link World.restore} rebuilds a world from it that continues bit-identically: every Float64
    * of every body after any number of steps is the same as the original's. Taking a snapshot
-   * changes nothing in the world.
+   * changes nothing in the world. The array owns its whole buffer (byteOffset 0, exact length),
+   * so it can be transferred to a worker as it is.
    *
    * Not saved: listeners (functions), and the events of the last step (`contactEvents` of a
    * restored world is empty until its first step).

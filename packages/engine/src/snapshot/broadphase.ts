@@ -53,7 +53,7 @@ export function writeBroadphase(w: SnapshotWriter, bp: BroadphaseBase): void {
 }
 
 function readIds(r: SnapshotReader, what: string, hw: number): Int32Array {
-  const ids = r.i32s(r.count(`the ${what} count`, hw));
+  const ids = r.i32s(r.count(`the ${what} count`, hw, 4));
   for (let i = 0; i < ids.length; i += 1) if (ids[i]! < 0 || ids[i]! >= hw) r.fail(`the ${what} list holds the id ${ids[i]} outside [0, ${hw})`);
   return ids;
 }
@@ -63,7 +63,7 @@ export function readBroadphase(r: SnapshotReader, bp: BroadphaseBase): void {
   const n = bp.n;
   const margin = r.f64();
   if (!Object.is(margin, bp.margin)) r.fail(`the broadphase margin ${margin} differs from this build's ${bp.margin}`);
-  const hw = r.count('the broadphase id bound', 1 << 26);
+  const hw = r.count('the broadphase id bound', 1 << 26, 1);
   const liveCount = r.count('the live proxy count', hw);
   const flags = r.u8s(hw);
   const tightMin = new Float64Array(hw * n);
@@ -91,7 +91,7 @@ export function readBroadphase(r: SnapshotReader, bp: BroadphaseBase): void {
   const moved = readIds(r, 'moved proxy', hw);
   const halfSpaces = readIds(r, 'half-space', hw);
   const freeIds = readIds(r, 'free id', hw);
-  const keys = r.f64s(r.count('the broadphase pair count', 1 << 30));
+  const keys = r.f64s(r.count('the broadphase pair count', 1 << 30, 8));
   for (let i = 0; i < keys.length; i += 1) {
     const key = keys[i]!;
     const a = Math.floor(key / PAIR_KEY_SCALE);

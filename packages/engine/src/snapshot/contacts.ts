@@ -68,7 +68,7 @@ export function writeContacts(w: SnapshotWriter, D: Dims, set: ContactSet, index
 export function readContacts(r: SnapshotReader, D: Dims, set: ContactSet, bodies: readonly Body[]): void {
   const { n, k } = D;
   const P = set.pointCapacity;
-  const count = r.count('the contact count', 1 << 26);
+  const count = r.count('the contact count', 1 << 26, 37);
   set.takeSlots(count);
   const cache = set.manifoldCache;
   let lastKey = -1;
@@ -127,7 +127,7 @@ export function writePendingEnds(w: SnapshotWriter, events: ContactEvents, refOf
 
 /** Reads the pending end events written by {@link writePendingEnds} into `events`. */
 export function readPendingEnds(r: SnapshotReader, events: ContactEvents, bodies: readonly Body[], departed: readonly Body[]): void {
-  const count = r.count('the pending end event count', 1 << 26);
+  const count = r.count('the pending end event count', 1 << 26, 8);
   const pick = (ref: number): Body => {
     const body = ref >= 0 ? bodies[ref] : departed[-1 - ref];
     if (body === undefined) return r.fail(`a pending end event names the unknown body reference ${ref}`);

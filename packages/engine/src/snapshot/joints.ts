@@ -120,8 +120,8 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
   const collideConnected = r.bool();
   const anchorA = r.f64s(D.n);
   const anchorB = r.f64s(D.n);
-  const state = r.f64s(r.count('a joint state length', 1024));
-  const lambda = r.f64s(r.count('a joint impulse count', 1024));
+  const state = r.f64s(r.count('a joint state length', 1024, 8));
+  const lambda = r.f64s(r.count('a joint impulse count', 1024, 8));
   const modeIndex = kind === KIND_DISTANCE ? r.u8() : 0;
   if (modeIndex >= MODES.length) r.fail(`a distance joint has the unknown mode ${modeIndex}`);
   let axes: Int32Array | null = null;
@@ -132,7 +132,7 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
     planes = r.i32s(r.count('a subspace joint plane count', D.k));
     world1 = r.u8();
   }
-  const frames = FRAME_FIELDS[kind]!.map(() => r.f64s(r.count('a joint frame length', 1024)));
+  const frames = FRAME_FIELDS[kind]!.map(() => r.f64s(r.count('a joint frame length', 1024, 8)));
   let joint: Joint;
   try {
     const common = { collideConnected };

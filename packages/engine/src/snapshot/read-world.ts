@@ -29,7 +29,7 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   const n = r.u8();
   if (n < 2 || n > 8) r.fail(`the dimension is ${n}, not in 2..8`);
 
-  const paramCount = r.count('the parameter count', 1024);
+  const paramCount = r.count('the parameter count', 1024, 6);
   const params: Record<string, number | boolean> = {};
   for (let i = 0; i < paramCount; i += 1) {
     const name = r.string();
@@ -51,14 +51,14 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   }
   const D = world.D;
 
-  const shapeCount = r.count('the shape count', 1 << 26);
+  const shapeCount = r.count('the shape count', 1 << 26, 10);
   const shapes: Shape[] = [];
   for (let i = 0; i < shapeCount; i += 1) shapes.push(readShape(r, D));
 
-  const bodyCount = r.count('the body count', 1 << 26);
+  const bodyCount = r.count('the body count', 1 << 26, 64);
   const flags: BodyFlags[] = [];
   for (let i = 0; i < bodyCount; i += 1) flags.push(readBody(r, D, shapes));
-  const departedCount = r.count('the departed body count', 1 << 26);
+  const departedCount = r.count('the departed body count', 1 << 26, 64);
   const departed: Body[] = [];
   for (let i = 0; i < departedCount; i += 1) {
     const f = readBody(r, D, shapes);
@@ -74,7 +74,7 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   }
   const bodies = world.bodies;
 
-  const jointCount = r.count('the joint count', 1 << 26);
+  const jointCount = r.count('the joint count', 1 << 26, 32);
   const joints = [];
   for (let i = 0; i < jointCount; i += 1) joints.push(readJoint(r, D, bodies));
   for (const p of joints) {

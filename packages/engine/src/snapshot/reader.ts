@@ -88,10 +88,22 @@ export class SnapshotReader {
     return v;
   }
 
-  /** A u32 that must be <= max (a count or an index), else fail naming `what`. */
-  count(what: string, max: number): number {
+  /** Bytes not read yet. */
+  get remaining(): number {
+    return this.bytes.length - this.at;
+  }
+
+  /**
+   * A count (u32) that must be <= max, and of items of at least `bytesEach` bytes that the rest
+   * of the buffer can hold (so a bad count fails here rather than allocate gigabytes), else fail
+   * naming `what`.
+   */
+  count(what: string, max: number, bytesEach = 0): number {
     const v = this.u32();
     if (v > max) this.fail(`${what} is ${v}, more than ${max}`);
+    if (bytesEach > 0 && v * bytesEach > this.remaining) {
+      throw new RangeError(`${FN}: argument 'bytes' is truncated: ${what} is ${v}, and ${this.remaining} bytes are left for them`);
+    }
     return v;
   }
 
@@ -110,8 +122,9 @@ export class SnapshotReader {
   }
 
   /** Reads `count` doubles into out[from ..] (out defaults to a new array). */
-  f64s(count: number, out: Float64Array = new Float64Array(count), from = 0): Float64Array {
+  f64s(count: number, into?: Float64Array, from = 0): Float64Array {
     this.need(8 * count);
+    const out = into ?? new Float64Array(count);
     const view = this.view;
     let at = this.at;
     for (let i = 0; i < count; i += 1, at += 8) out[from + i] = view.getFloat64(at, true);
@@ -119,8 +132,9 @@ export class SnapshotReader {
     return out;
   }
 
-  i32s(count: number, out: Int32Array = new Int32Array(count), from = 0): Int32Array {
+  i32s(count: number, into?: Int32Array, from = 0): Int32Array {
     this.need(4 * count);
+    const out = into ?? new Int32Array(count);
     for (let i = 0; i < count; i += 1) {
       out[from + i] = this.view.getInt32(this.at, true);
       this.at += 4;
@@ -128,8 +142,9 @@ export class SnapshotReader {
     return out;
   }
 
-  u32s(count: number, out: Uint32Array = new Uint32Array(count), from = 0): Uint32Array {
+  u32s(count: number, into?: Uint32Array, from = 0): Uint32Array {
     this.need(4 * count);
+    const out = into ?? new Uint32Array(count);
     for (let i = 0; i < count; i += 1) {
       out[from + i] = this.view.getUint32(this.at, true);
       this.at += 4;
@@ -137,8 +152,9 @@ export class SnapshotReader {
     return out;
   }
 
-  u8s(count: number, out: Uint8Array = new Uint8Array(count), from = 0): Uint8Array {
+  u8s(count: number, into?: Uint8Array, from = 0): Uint8Array {
     this.need(count);
+    const out = into ?? new Uint8Array(count);
     out.set(this.bytes.subarray(this.at, this.at + count), from);
     this.at += count;
     return out;
@@ -147,7 +163,8 @@ export class SnapshotReader {
   string(): string {
     const length = this.u32();
     this.need(length);
-    const b = this.bytes.subarray(this.at, this.at + length);
+    // A copy: TextDecoder refuses views of a SharedArrayBuffer.
+    const b = this.bytes.slice(this.at, this.at + length);
     this.at += length;
     try {
       return decoder.decode(b);

@@ -170,7 +170,7 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
     volume = r.f64();
     covariance = r.f64s(D.n);
   }
-  const count = r.count('the field count of a shape', 64);
+  const count = r.count('the field count of a shape', 64, 6);
   const fields: Fields = {};
   for (let i = 0; i < count; i += 1) {
     const name = r.string();
@@ -190,16 +190,16 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
         fields[name] = null;
         break;
       case TAG_F64:
-        fields[name] = r.f64s(r.count('an array length', limit));
+        fields[name] = r.f64s(r.count('an array length', limit, 8));
         break;
       case TAG_I32:
-        fields[name] = r.i32s(r.count('an array length', limit));
+        fields[name] = r.i32s(r.count('an array length', limit, 4));
         break;
       case TAG_U32:
-        fields[name] = r.u32s(r.count('an array length', limit));
+        fields[name] = r.u32s(r.count('an array length', limit, 4));
         break;
       case TAG_U8:
-        fields[name] = r.u8s(r.count('an array length', limit));
+        fields[name] = r.u8s(r.count('an array length', limit, 1));
         break;
       default:
         r.fail(`a shape field has the unknown tag ${tag}`);

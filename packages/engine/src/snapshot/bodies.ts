@@ -13,6 +13,7 @@
 import type { Dims } from '@physin/algebra';
 import { Body, MOTION_DYNAMIC, MOTION_KINEMATIC, MOTION_STATIC } from '../body.js';
 import type { BodyType } from '../body.js';
+import { createPose } from '../collision/manifold.js';
 import type { Shape } from '../shapes/shape.js';
 import type { SnapshotReader } from './reader.js';
 import type { SnapshotWriter } from './writer.js';
@@ -111,7 +112,8 @@ export function applyBodyFlags(D: Dims, f: BodyFlags): void {
   body.sleeping = f.sleeping;
   body.sleepTimer = f.sleepTimer;
   body.poseDirty = f.poseDirty;
-  if (f.pose !== null && body.pose !== null) {
+  if (f.pose !== null) {
+    body.pose ??= createPose(n); // a body that left the world keeps the pose it had there
     body.pose.x.set(f.pose.subarray(0, n));
     body.pose.M.set(f.pose.subarray(n, n + n * n));
   }

@@ -42,8 +42,10 @@ const TAG_I32 = 5;
 const TAG_U32 = 6;
 const TAG_U8 = 7;
 
-/** Fields that are code, not data: taken from the rebuilt shape. */
-const CODE_FIELDS = new Set(['colliders', 'massProperties']);
+/** Whether a field is code, not data (functions and the pair collider table): taken from the rebuilt shape. */
+function isCode(name: string, value: unknown): boolean {
+  return typeof value === 'function' || name === 'colliders';
+}
 
 function num(r: SnapshotReader, f: Fields, name: string): number {
   const v = f[name];
@@ -121,7 +123,7 @@ export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
     w.f64(mp.volume);
     w.f64s(mp.covariance, 0, D.n);
   }
-  const names = Object.keys(shape).filter((name) => !CODE_FIELDS.has(name));
+  const names = Object.keys(shape).filter((name) => !isCode(name, (shape as unknown as Fields)[name]));
   w.u32(names.length);
   for (const name of names) {
     const value = (shape as unknown as Fields)[name];
@@ -215,7 +217,7 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   // The rebuilt shape, its data fields replaced by the saved ones.
   const out: Record<string, unknown> = { ...(built as unknown as Fields) };
   for (const name of Object.keys(out)) {
-    if (!CODE_FIELDS.has(name) && !(name in fields)) r.fail(`a ${kind} shape lacks its field '${name}'`);
+    if (!isCode(name, out[name]) && !(name in fields)) r.fail(`a ${kind} shape lacks its field '${name}'`);
   }
   for (const name of Object.keys(fields)) {
     if (!(name in out)) r.fail(`a ${kind} shape has the unknown field '${name}'`);

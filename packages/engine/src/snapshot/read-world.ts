@@ -30,17 +30,19 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   if (n < 2 || n > 8) r.fail(`the dimension is ${n}, not in 2..8`);
 
   const paramCount = r.count('the parameter count', 1024, 6);
-  const params: Record<string, number | boolean> = {};
+  const entries: [string, number | boolean][] = [];
   for (let i = 0; i < paramCount; i += 1) {
     const name = r.string();
     const tag = r.u8();
-    if (tag === PARAM_BOOLEAN) params[name] = r.bool();
-    else if (tag === PARAM_NUMBER) params[name] = r.f64();
+    if (tag === PARAM_BOOLEAN) entries.push([name, r.bool()]);
+    else if (tag === PARAM_NUMBER) entries.push([name, r.f64()]);
     else r.fail(`parameter '${name}' has the unknown tag ${tag}`);
   }
+  const params = Object.fromEntries(entries); // own properties only, whatever the names
   const gravity = r.f64s(n);
   const time = r.f64();
   const steps = r.f64();
+  if (!Number.isFinite(time) || !(Number.isInteger(steps) && steps >= 0)) r.fail(`the clock (time ${time}, steps ${steps}) is not a finite time and a step count`);
   const boundsStale = r.bool();
 
   let world: World;

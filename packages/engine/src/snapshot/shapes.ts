@@ -47,6 +47,10 @@ function isCode(name: string, value: unknown): boolean {
   return typeof value === 'function' || name === 'colliders';
 }
 
+function hasOwn(object: object, name: string): boolean {
+  return Object.prototype.hasOwnProperty.call(object, name);
+}
+
 function num(r: SnapshotReader, f: Fields, name: string): number {
   const v = f[name];
   if (typeof v !== 'number') r.fail(`a shape lacks the number field '${name}'`);
@@ -113,7 +117,7 @@ function unitMass(D: Dims, shape: Shape): MassProperties | null {
  */
 export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
   const kind = String(shape.kind);
-  if (!Object.prototype.hasOwnProperty.call(REBUILD, kind)) {
+  if (!hasOwn(REBUILD, kind)) {
     throw new Error(`World.snapshot: a body has a shape of kind '${kind}', which snapshots do not support yet (known: ${SNAPSHOT_SHAPE_KINDS.join(', ')}); add it to packages/engine/src/snapshot/shapes.ts`);
   }
   w.string(kind);
@@ -164,7 +168,7 @@ export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
 /** Reads one shape written by {@link writeShape}. */
 export function readShape(r: SnapshotReader, D: Dims): Shape {
   const kind = r.string();
-  const rebuild = Object.prototype.hasOwnProperty.call(REBUILD, kind) ? REBUILD[kind]! : null;
+  const rebuild = hasOwn(REBUILD, kind) ? REBUILD[kind]! : null;
   if (rebuild === null) r.fail(`unknown shape kind '${kind}'`);
   let volume = 0;
   let covariance: Float64Array | null = null;
@@ -173,7 +177,7 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
     covariance = r.f64s(D.n);
   }
   const count = r.count('the field count of a shape', 64, 6);
-  const fields: Fields = {};
+  const fields: Fields = Object.create(null) as Fields; // names come from the bytes: no prototype to hit
   for (let i = 0; i < count; i += 1) {
     const name = r.string();
     const tag = r.u8();
@@ -217,10 +221,10 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   // The rebuilt shape, its data fields replaced by the saved ones.
   const out: Record<string, unknown> = { ...(built as unknown as Fields) };
   for (const name of Object.keys(out)) {
-    if (!isCode(name, out[name]) && !(name in fields)) r.fail(`a ${kind} shape lacks its field '${name}'`);
+    if (!isCode(name, out[name]) && !hasOwn(fields, name)) r.fail(`a ${kind} shape lacks its field '${name}'`);
   }
   for (const name of Object.keys(fields)) {
-    if (!(name in out)) r.fail(`a ${kind} shape has the unknown field '${name}'`);
+    if (!hasOwn(out, name) || isCode(name, out[name])) r.fail(`a ${kind} shape has the unknown field '${name}'`);
     out[name] = fields[name] === null && (built as unknown as Fields)[name] === undefined ? undefined : fields[name];
   }
   if (covariance !== null) {

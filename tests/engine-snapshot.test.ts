@@ -491,11 +491,13 @@ describe('restore refuses bad bytes, naming the argument', () => {
   world.step(DT);
   const good = world.snapshot();
 
-  it('accepts the good bytes, also as a view into a larger buffer', () => {
-    const big = new Uint8Array(good.length + 16);
-    big.set(good, 8);
-    const restored = World.restore(big.subarray(8, 8 + good.length));
-    expectSameBytes(restored.snapshot(), good, 'restored from a view');
+  it('accepts the good bytes, also as a view into a larger buffer at any alignment', () => {
+    for (const offset of [8, 1, 2, 3]) {
+      const big = new Uint8Array(good.length + 16);
+      big.set(good, offset);
+      const restored = World.restore(big.subarray(offset, offset + good.length));
+      expectSameBytes(restored.snapshot(), good, `restored from a view at offset ${offset}`);
+    }
   });
 
   it('TypeError for a value that is not a Uint8Array', () => {

@@ -402,6 +402,26 @@ describe('snapshot between commands', () => {
   });
 });
 
+describe('the last joint of a world removed or broken', () => {
+  for (const how of ['removed', 'broken'] as const) {
+    it(`${how}: the world steps on (it used to hang when removed) and its restored copy matches it`, () => {
+      const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: false } });
+      const D = world.D;
+      world.addBody(new Body(D, { shape: HalfSpace(D, axis(3, 1), 0), mass: 0 }));
+      const boxes = [0, 1, 2].map((i) => world.addBody(new Body(D, { shape: HyperBox(D, [0.3, 0.3, 0.3]), mass: 1, position: [2 * i, 0.3, 0] })));
+      const rod = world.addBody(new Body(D, { shape: HyperBox(D, [0.4, 0.05, 0.05]), mass: 1, position: [0, 4, 0] }));
+      const joint = world.addConstraint(new PointJoint(boxes[2]!, rod, [0, 0, 0], [0, -3.7, 0], how === 'broken' ? { breakForce: 5 } : {}));
+      for (let s = 0; s < 30; s += 1) world.step(DT);
+      if (how === 'removed') world.removeConstraint(joint);
+      else runUntil(world, () => joint.broken, 100);
+      expect(world.constraints.length).toBe(0);
+      const restored = World.restore(world.snapshot());
+      expectSameContinuation(world, restored, 120, `last joint ${how}`);
+      expect(rod.x[1], 'the rod fell to the ground').toBeLessThan(0.5);
+    });
+  }
+});
+
 describe('snapshot at every step of a bounce', () => {
   it('a ball bouncing on the ground (restitution 0.9, speculative contacts): every moment continues identically', () => {
     const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: true } });

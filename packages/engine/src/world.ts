@@ -707,6 +707,9 @@ export class World {
     const joints = this.jointSolver;
     sb.reset();
     const points = solver.prepare(this.contacts, sb, this.constants, p);
+    // With no joint left, nothing of the last prepare may be solved again (solvePositions reads
+    // joints.count): a world whose last joint was removed hung in its next step.
+    if (this.jointList.length === 0) joints.count = 0;
     const jointCount = this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
     if (jointCount === 0) {
       joints.brokenCount = 0;

@@ -145,7 +145,9 @@ function richScene(n: number): Scene {
   world.addConstraint(new FixedJoint(w1, w2, at(0.3, 0.1), at(-0.2, -0.2), { breakForce: 1e6 }));
   // A wheel on a hinge with motor and limits (held), and a breakable one driven into its limit.
   const wheel = world.addBody(new Body(D, { shape: HyperBox(D, at(0.5, 0.1, 0.1, 0.1).map((v) => v || 0.1)), mass: 2, position: at(0, 4, 2) }));
-  world.addConstraint(new HingeJoint(wheel, null, at(), at(0, 4, 2), { plane: 0, motorSpeed: 1.5, maxMotorTorque: 5, lowerAngle: -0.5, upperAngle: 2, hertz: 30, damping: 1 }));
+  // Its plane is the simple bivector e01 + e02 (normalised by the joint: a rounding that the restore must not redo).
+  const plane = Array.from({ length: D.k }, (_, p) => (p < 2 ? 1 : 0));
+  world.addConstraint(new HingeJoint(wheel, null, at(), at(0, 4, 2), { plane, motorSpeed: 1.5, maxMotorTorque: 5, lowerAngle: -0.5, upperAngle: 2, hertz: 30, damping: 1 }));
   const lever = world.addBody(new Body(D, { shape: HyperBox(D, at(0.4, 0.05, 0.05, 0.05).map((v) => v || 0.05)), mass: 1, position: at(0, 4, -2) }));
   const breakable = world.addConstraint(
     new HingeJoint(lever, null, at(-0.4), at(-0.4, 4, -2), { plane: 0, motorSpeed: 3, maxMotorTorque: 80, upperAngle: 0.6, breakTorque: 40 }),
@@ -154,7 +156,7 @@ function richScene(n: number): Scene {
   const slider = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(-1, 0.6, -2), velocity: at(1.5, 0, 2) }));
   const freePlane = [0];
   const lockAxes = [...Array(n).keys()].filter((c) => c >= 2);
-  world.addConstraint(new SubspaceJoint(slider, null, { lockAxes, freePlanes: freePlane, localA: at(), localB: at(0, 0, -2) }));
+  world.addConstraint(new SubspaceJoint(slider, null, { lockAxes, freePlanes: freePlane, localA: at(), localB: at(0, 0, -2), worldFrame: n === 4 }));
   return { world, breakable, stackTop: stackTop! };
 }
 

@@ -590,4 +590,13 @@ describe('snapshot refuses what it cannot rebuild', () => {
     world.addBody(new Body(D, { shape: { ...box, kind: 'capsule' } as unknown as typeof box, mass: 1 }));
     expect(() => world.snapshot()).toThrow(/shape of kind 'capsule'/);
   });
+
+  it('a joint class it does not know is named (a subclass would come back as its base class)', () => {
+    const world = new World({ dimensions: 3 });
+    const D = world.D;
+    const a = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1 }));
+    class TetherJoint extends PointJoint {}
+    world.addConstraint(new TetherJoint(a, null, [0, 0, 0], [0, 1, 0]));
+    expect(() => world.snapshot()).toThrow(/a joint of type TetherJoint is not supported/);
+  });
 });

@@ -12,6 +12,7 @@ import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
 import { KIND_LINEAR, ROW_EQUAL, ROW_INEQUAL, SC_C, SC_TOL } from './joint-solver.js';
 import { readNonNegative } from './options.js';
+import { registerJointClass } from '../snapshot/registry.js';
 
 /** How a {@link DistanceJoint} holds its length. */
 export type DistanceMode = 'rod' | 'rope' | 'strut';
@@ -127,3 +128,6 @@ export class DistanceJoint extends Joint {
     js.addRow(j, 0, KIND_LINEAR, this.modeIndex === 0 ? ROW_EQUAL : ROW_INEQUAL, 1);
   }
 }
+
+// World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
+registerJointClass('distance', DistanceJoint);

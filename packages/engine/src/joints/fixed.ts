@@ -9,6 +9,7 @@ import { currentAnchors, currentRelative, distance, identityRotor, referenceFram
 import { Joint } from './joint.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
+import { registerJointClass } from '../snapshot/registry.js';
 
 /**
  * Welds `b` to `a` (or `a` to the world): the anchors held together and the relative rotor held
@@ -59,3 +60,6 @@ export class FixedJoint extends Joint {
     js.lockedPlaneRows(j, this.planes, 0, js.n);
   }
 }
+
+// World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
+registerJointClass('fixed', FixedJoint);

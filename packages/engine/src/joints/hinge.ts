@@ -13,6 +13,7 @@ import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
 import { KIND_ANGULAR, KIND_MOTOR, ROW_EQUAL, ROW_INEQUAL, ROW_MOTOR, SC_C, SC_H, SC_HI, SC_LO, SC_TARGET } from './joint-solver.js';
 import { readFinite, readLimit, readNonNegative } from './options.js';
+import { registerJointClass } from '../snapshot/registry.js';
 
 /** Options of a {@link HingeJoint}. */
 export interface HingeJointOptions extends JointOptions {
@@ -264,3 +265,6 @@ export class HingeJoint extends Joint {
     }
   }
 }
+
+// World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
+registerJointClass('hinge', HingeJoint);

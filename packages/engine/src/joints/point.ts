@@ -9,6 +9,7 @@ import { currentAnchors, distance } from './frames.js';
 import { Joint } from './joint.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
+import { registerJointClass } from '../snapshot/registry.js';
 
 /**
  * Holds the point `localA` of `a` on the point `localB` of `b` (or on the world point `localB`
@@ -44,3 +45,6 @@ export class PointJoint extends Joint {
     js.pointRows(j, 0);
   }
 }
+
+// World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
+registerJointClass('point', PointJoint);

@@ -13,6 +13,7 @@ import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
 import { KIND_LINEAR, ROW_EQUAL, SC_C } from './joint-solver.js';
 import { readBoolean, readIndexList } from './options.js';
+import { registerJointClass } from '../snapshot/registry.js';
 
 /** Options of a {@link SubspaceJoint}. */
 export interface SubspaceJointOptions extends JointOptions {
@@ -162,3 +163,6 @@ export class SubspaceJoint extends Joint {
     }
   }
 }
+
+// World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
+registerJointClass('subspace', SubspaceJoint);

@@ -3,6 +3,7 @@ import { checkDims, checkVector } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
 import { boxColliders } from '../collision/box-colliders.js';
+import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
  * A solid n-dimensional box centred on its local origin with its edges along the local axes:
@@ -49,3 +50,6 @@ export function HyperBox(D: Dims, halfExtents: ArrayLike<number>): BoxShape {
     },
   });
 }
+
+// World snapshots rebuild saved shapes of this kind with this factory (snapshot/registry.ts).
+registerShapeFactory('box', HyperBox);

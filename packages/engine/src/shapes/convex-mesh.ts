@@ -10,6 +10,7 @@ import type { MassProperties, Shape } from './shape.js';
 import { mergeTriangles } from './triangle-merge.js';
 import type { TriangleMergeOptions } from './triangle-merge.js';
 import { meshColliders } from '../collision/mesh-colliders.js';
+import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
  * Default relative tolerance of the convex mesh checks, as a fraction of the mesh size (the
@@ -163,6 +164,9 @@ function fromTriangles(
 }
 
 ConvexMesh.fromTriangles = fromTriangles;
+
+// World snapshots rebuild saved meshes with this factory (snapshot/registry.ts).
+registerShapeFactory('mesh', ConvexMesh);
 
 function readTolerance(where: string, options: unknown): number {
   if (typeof options !== 'object' || options === null) {

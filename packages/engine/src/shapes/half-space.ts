@@ -1,6 +1,7 @@
 import type { Dims } from '@physin/algebra';
 import { checkDims, checkFinite, checkVector } from './checks.js';
 import type { MassProperties, Shape } from './shape.js';
+import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
  * A solid half-space: the points x with normal · x <= offset, bounded by the hyperplane
@@ -49,3 +50,6 @@ export function HalfSpace(D: Dims, normal: ArrayLike<number>, offset: number): H
     },
   });
 }
+
+// World snapshots rebuild saved shapes of this kind with this factory (snapshot/registry.ts).
+registerShapeFactory('halfspace', HalfSpace);

@@ -4,6 +4,7 @@ import { checkPositive } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
 import { sphereColliders } from '../collision/sphere-colliders.js';
+import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
  * A solid ball centred on its local origin. It has no count of dimensions of its own (`n` is
@@ -42,3 +43,6 @@ export function HyperSphere(radius: number): SphereShape {
     },
   });
 }
+
+// World snapshots rebuild saved shapes of this kind with this factory (snapshot/registry.ts).
+registerShapeFactory('sphere', HyperSphere);

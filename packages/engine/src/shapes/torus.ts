@@ -4,6 +4,7 @@ import { checkDims, checkIndex, checkPositive, isNumberList } from './checks.js'
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import type { MassProperties, Shape } from './shape.js';
 import { torusColliders } from '../collision/torus-colliders.js';
+import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
  * A solid n-torus centred on its local origin: the points at distance <= `minorRadius` from the
@@ -94,3 +95,6 @@ export function HyperTorus(
     },
   });
 }
+
+// World snapshots rebuild saved shapes of this kind with this factory (snapshot/registry.ts).
+registerShapeFactory('torus', HyperTorus);

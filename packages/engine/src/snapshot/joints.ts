@@ -13,14 +13,15 @@
  */
 import type { Dims } from '@physin/algebra';
 import type { Body } from '../body.js';
-import { DistanceJoint } from '../joints/distance.js';
-import type { DistanceMode } from '../joints/distance.js';
-import { FixedJoint } from '../joints/fixed.js';
-import { HingeJoint } from '../joints/hinge.js';
-import { Joint, JS_COMMON_COUNT } from '../joints/joint.js';
-import { PointJoint } from '../joints/point.js';
-import { SubspaceJoint } from '../joints/subspace.js';
+import type { DistanceJoint, DistanceMode } from '../joints/distance.js';
+import type { FixedJoint } from '../joints/fixed.js';
+import type { HingeJoint } from '../joints/hinge.js';
+import { JS_COMMON_COUNT } from '../joints/joint.js';
+import type { Joint } from '../joints/joint.js';
+import type { PointJoint } from '../joints/point.js';
+import type { SubspaceJoint } from '../joints/subspace.js';
 import type { SnapshotReader } from './reader.js';
+import { jointClass, jointTypeName } from './registry.js';
 import type { SnapshotWriter } from './writer.js';
 
 const KIND_POINT = 0;
@@ -61,14 +62,25 @@ function privateNumber(joint: Joint, name: string): number {
 /** The private rest frames (and plane) of each joint type, written and put back raw. */
 const FRAME_FIELDS: readonly (readonly string[])[] = [[], [], ['frameA', 'frameB'], ['planeValue', 'frameA', 'frameB'], ['frameA', 'frameB']];
 
+/** Type names of the joint classes (registry.ts), by kind code. */
+const NAMES = ['point', 'distance', 'fixed', 'hinge', 'subspace'];
+
 function kindOf(joint: Joint): number {
-  // Subclasses first would matter only if one joint type extended another; none does.
-  if (joint instanceof PointJoint) return KIND_POINT;
-  if (joint instanceof DistanceJoint) return KIND_DISTANCE;
-  if (joint instanceof FixedJoint) return KIND_FIXED;
-  if (joint instanceof HingeJoint) return KIND_HINGE;
-  if (joint instanceof SubspaceJoint) return KIND_SUBSPACE;
-  throw new Error(`World.snapshot: a joint of type ${joint.constructor.name} is not supported by snapshots (known: PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint); add it to packages/engine/src/snapshot/joints.ts`);
+  const kind = NAMES.indexOf(jointTypeName(joint.constructor) ?? '');
+  if (kind < 0) {
+    throw new Error(`World.snapshot: a joint of type ${joint.constructor.name} is not supported by snapshots (known: PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint); add it to packages/engine/src/snapshot/joints.ts and register its class (registry.ts)`);
+  }
+  return kind;
+}
+
+/** The registered class of a joint type (see registry.ts), typed as `C`. */
+function classOf<C>(kind: number): C {
+  const c = jointClass(NAMES[kind]!);
+  if (typeof c !== 'function') {
+    const name = `${NAMES[kind]![0]!.toUpperCase()}${NAMES[kind]!.slice(1)}Joint`;
+    throw new Error(`World.restore: the snapshot holds a ${name}, and this program never loaded it; reference ${name} from @physin/engine before restoring`);
+  }
+  return c as C;
 }
 
 /** Writes one joint; `indexOf` gives a body's index in the world's body list. */
@@ -138,19 +150,19 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
     const common = { collideConnected };
     switch (kind) {
       case KIND_POINT:
-        joint = new PointJoint(a, b, anchorA, anchorB, common);
+        joint = new (classOf<typeof PointJoint>(kind))(a, b, anchorA, anchorB, common);
         break;
       case KIND_DISTANCE:
-        joint = new DistanceJoint(a, b, anchorA, anchorB, { ...common, rest: state[JS_COMMON_COUNT]!, mode: MODES[modeIndex]! });
+        joint = new (classOf<typeof DistanceJoint>(kind))(a, b, anchorA, anchorB, { ...common, rest: state[JS_COMMON_COUNT]!, mode: MODES[modeIndex]! });
         break;
       case KIND_FIXED:
-        joint = new FixedJoint(a, b, anchorA, anchorB, common);
+        joint = new (classOf<typeof FixedJoint>(kind))(a, b, anchorA, anchorB, common);
         break;
       case KIND_HINGE:
-        joint = new HingeJoint(a, b, anchorA, anchorB, { ...common, plane: frames[0]! });
+        joint = new (classOf<typeof HingeJoint>(kind))(a, b, anchorA, anchorB, { ...common, plane: frames[0]! });
         break;
       default:
-        joint = new SubspaceJoint(a, b, {
+        joint = new (classOf<typeof SubspaceJoint>(kind))(a, b, {
           ...common,
           localA: anchorA,
           localB: anchorB,
@@ -160,6 +172,7 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
         });
     }
   } catch (error) {
+    if (error instanceof Error && error.message.startsWith('World.restore')) throw error;
     return r.fail(`a joint cannot be rebuilt (${(error as Error).message})`);
   }
   if (joint.state.length !== state.length || joint.lambda.length !== lambda.length) r.fail('a joint has arrays of the wrong length');

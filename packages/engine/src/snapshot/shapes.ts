@@ -12,21 +12,23 @@
  * corrected, and `massProperties` is replaced by one on the saved per-unit-mass values when the
  * rebuilt one differs.
  *
- * Adding a shape kind: add an entry to `REBUILD` (the factory call from the saved fields). A kind
- * without an entry makes `world.snapshot()` throw, naming the kind, rather than write a shape
- * the reader cannot rebuild.
+ * Adding a shape kind: add an entry to `REBUILD` (the factory call from the saved fields), and
+ * one `registerShapeFactory(kind, factory)` line to the kind's module (registry.ts says why). A
+ * kind without an entry makes `world.snapshot()` throw, naming the kind, rather than write a
+ * shape the reader cannot rebuild.
  *
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { HyperBox } from '../shapes/box.js';
-import { ConvexMesh } from '../shapes/convex-mesh.js';
-import { HalfSpace } from '../shapes/half-space.js';
+import type { HyperBox } from '../shapes/box.js';
+import type { ConvexMesh } from '../shapes/convex-mesh.js';
+import type { HalfSpace } from '../shapes/half-space.js';
 import { diagonalMassProperties, checkMassArguments } from '../shapes/mass-properties.js';
 import type { MassProperties, Shape } from '../shapes/shape.js';
-import { HyperSphere } from '../shapes/sphere.js';
-import { HyperTorus } from '../shapes/torus.js';
+import type { HyperSphere } from '../shapes/sphere.js';
+import type { HyperTorus } from '../shapes/torus.js';
 import type { SnapshotReader } from './reader.js';
+import { shapeFactory } from './registry.js';
 import type { SnapshotWriter } from './writer.js';
 
 /** The saved data fields of a shape, by name. */
@@ -64,14 +66,28 @@ function f64(r: SnapshotReader, f: Fields, name: string): Float64Array {
 }
 
 /**
+ * The registered factory of `kind` (see registry.ts), typed as `F`. A program that never loaded
+ * the kind's module cannot rebuild it: the error says which factory to reference.
+ */
+function factory<F>(kind: string, name: string): F {
+  const f = shapeFactory(kind);
+  if (typeof f !== 'function') {
+    throw new Error(`World.restore: the snapshot holds a shape of kind '${kind}', and this program never loaded ${name}; reference ${name} from @physin/engine before restoring`);
+  }
+  return f as F;
+}
+
+/**
  * The factory call of each shape kind, from the saved fields (the result is then corrected to the
- * saved fields exactly). One function per kind: a new kind needs one line here.
+ * saved fields exactly). One function per kind: a new kind needs one line here, and its module
+ * one `registerShapeFactory` line (registry.ts).
  */
 const REBUILD: Readonly<Record<string, (D: Dims, f: Fields, r: SnapshotReader) => Shape>> = {
-  box: (D, f, r) => HyperBox(D, f64(r, f, 'halfExtents')),
-  sphere: (_D, f, r) => HyperSphere(num(r, f, 'radius')),
-  halfspace: (D, f, r) => HalfSpace(D, f64(r, f, 'normal'), num(r, f, 'offset')),
-  torus: (D, f, r) => HyperTorus(D, num(r, f, 'majorRadius'), num(r, f, 'minorRadius'), num(r, f, 'plane')),
+  box: (D, f, r) => factory<typeof HyperBox>('box', 'HyperBox')(D, f64(r, f, 'halfExtents')),
+  sphere: (_D, f, r) => factory<typeof HyperSphere>('sphere', 'HyperSphere')(num(r, f, 'radius')),
+  halfspace: (D, f, r) => factory<typeof HalfSpace>('halfspace', 'HalfSpace')(D, f64(r, f, 'normal'), num(r, f, 'offset')),
+  torus: (D, f, r) =>
+    factory<typeof HyperTorus>('torus', 'HyperTorus')(D, num(r, f, 'majorRadius'), num(r, f, 'minorRadius'), num(r, f, 'plane')),
   mesh: (D, f, r) => rebuildMesh(D, f, r),
 };
 
@@ -96,7 +112,7 @@ function rebuildMesh(D: Dims, f: Fields, r: SnapshotReader): Shape {
     size = Math.max(size, Math.sqrt(d2));
   }
   const tolerance = (num(r, f, 'tolerance') / size) * (1 + 1e-6);
-  return ConvexMesh(D, vertices, Int32Array.from(facets), { tolerance });
+  return factory<typeof ConvexMesh>('mesh', 'ConvexMesh')(D, vertices, Int32Array.from(facets), { tolerance });
 }
 
 /** The kinds a snapshot can hold. */
@@ -215,7 +231,7 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   try {
     built = rebuild(D, fields, r);
   } catch (error) {
-    if (error instanceof RangeError && error.message.startsWith('World.restore')) throw error;
+    if (error instanceof Error && error.message.startsWith('World.restore')) throw error;
     return r.fail(`the saved ${kind} shape cannot be rebuilt (${(error as Error).message})`);
   }
   // The rebuilt shape, its data fields replaced by the saved ones.

@@ -279,6 +279,25 @@ describe('snapshot and restore: piles, where most broadphase pairs do not touch'
 });
 
 describe('snapshot is read-only and restore keeps the order', () => {
+  it('an empty world and a world of static bodies only', () => {
+    for (const n of [2, 8]) {
+      const empty = new World({ dimensions: n, gravity: gravity(n), params: { subSteps: 2 } });
+      empty.step(DT);
+      const copy = World.restore(empty.snapshot());
+      expect(copy.n).toBe(n);
+      expect(copy.bodies.length).toBe(0);
+      expect(copy.params.subSteps).toBe(2);
+      expect(copy.stepCount).toBe(1);
+      expectSameBytes(copy.snapshot(), empty.snapshot(), `empty n = ${n}`);
+      const D = empty.D;
+      empty.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0 }));
+      empty.addBody(new Body(D, { shape: HyperSphere(1), mass: 0, position: axis(n, 0, 3) }));
+      const statics = World.restore(empty.snapshot());
+      expectSameContinuation(empty, statics, 10, `static bodies n = ${n}`);
+      expectSameBytes(statics.snapshot(), empty.snapshot(), `static bodies n = ${n}`);
+    }
+  });
+
   it('taking snapshots does not change the world (3D rich scene)', () => {
     const a = richScene(3).world;
     const b = richScene(3).world;

@@ -11,6 +11,7 @@ import {
   checkRotor,
   checkVector,
   rotateInPlane as rotorRotateInPlane,
+  rotorReverse,
 } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';
@@ -27,6 +28,8 @@ import type { CollisionEvent, CollisionListener } from './contacts/contact-event
 export interface BodyOwner {
   /** The body's sleep state or pose changed outside the step. */
   onBodyChanged(body: Body): void;
+  /** The body's friction or restitution changed. */
+  onMaterialChanged(body: Body): void;
 }
 
 /**
@@ -108,6 +111,10 @@ interface BodyScratch {
   readonly bivector: Float64Array;
   readonly tmp: Float64Array;
   readonly vector: Float64Array;
+  /** r numbers, for setRotor / getRotor. */
+  readonly rotor: Float64Array;
+  /** n numbers, the described origin kept by setRotor. */
+  readonly origin: Float64Array;
 }
 const scratchByN: (BodyScratch | undefined)[] = [];
 function scratchFor(D: Dims): BodyScratch {
@@ -115,6 +122,8 @@ function scratchFor(D: Dims): BodyScratch {
     bivector: new Float64Array(D.k),
     tmp: new Float64Array(D.k),
     vector: new Float64Array(D.n),
+    rotor: new Float64Array(D.r),
+    origin: new Float64Array(D.n),
   });
 }
 
@@ -189,8 +198,11 @@ export class Body {
   readonly D: Dims;
   /** The shape (shared, immutable). */
   readonly shape: Shape;
-  /** Surface properties (frozen). */
-  readonly material: Material;
+  /** Surface properties (frozen; change them with {@link Body.setMaterial}). */
+  get material(): Material {
+    return this.materialValue;
+  }
+  private materialValue: Material;
 
   /** @internal Motion code: MOTION_DYNAMIC, MOTION_KINEMATIC or MOTION_STATIC. */
   motion: Motion;
@@ -355,7 +367,7 @@ export class Body {
     this.name = name;
     this.D = D;
     this.shape = shape;
-    this.material = material;
+    this.materialValue = material;
     this.motion = motionOf[type];
     this.massValue = mass;
     this.invMass = type === 'dynamic' ? 1 / mass : 0;
@@ -733,6 +745,69 @@ export class Body {
     for (let p = 0; p < this.D.k; p += 1) this.tView[p] = this.tView[p]! + t[p]!;
     this.hasTorque = true;
     this.wake();
+    return this;
+  }
+
+  /**
+   * Writes the orientation of the coordinates the shape was described in (r numbers) into `out`
+   * and returns it: `R` itself for every shape without a `frameRotor`, else R·frameRotor~.
+   */
+  getRotor(out: Float64Array = new Float64Array(this.D.r)): Float64Array {
+    const { r } = this.D;
+    if (!(out instanceof Float64Array) || out.length !== r) {
+      throw new TypeError(`Body.getRotor: argument 'out' must be a Float64Array of length ${r}`);
+    }
+    const frame = this.shape.frameRotor;
+    if (frame === undefined) {
+      out.set(this.rView);
+      return out;
+    }
+    const inv = scratchFor(this.D).rotor;
+    rotorReverse(this.D, inv, frame);
+    this.D.kernels.mul(out, this.rView, inv);
+    return out;
+  }
+
+  /**
+   * Turns the body (a teleport; the world angular velocity is kept) so that the coordinates its
+   * shape was described in have the orientation `R` (a unit rotor, r numbers), about the origin of
+   * those coordinates (which stays in place). The inverse of {@link Body.getRotor}.
+   */
+  setRotor(R: ArrayLike<number>): this {
+    const fn = 'Body.setRotor';
+    checkRotor(this.D, 'R', R, fn);
+    const K = this.D.kernels;
+    const next = scratchFor(this.D).rotor;
+    next.set(R);
+    const defect = K.defect(next);
+    if (!(defect <= ROTOR_INPUT_TOLERANCE)) {
+      throw new RangeError(`${fn}: argument 'R' must be a unit rotor (defect |R R~ - 1| <= ${ROTOR_INPUT_TOLERANCE}), got defect ${defect}`);
+    }
+    const origin = this.comOffset === null ? null : this.getPositionN(scratchFor(this.D).origin);
+    const frame = this.shape.frameRotor;
+    if (frame !== undefined) K.mul(this.rView, next, frame);
+    else this.rView.set(next);
+    if (K.defect(this.rView) > 0) K.correct(this.rView, this.rView);
+    if (origin !== null) {
+      this.xView.set(origin);
+      this.placeCentreOfMass();
+    }
+    if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
+    this.movedByHand();
+    return this;
+  }
+
+  /**
+   * Changes friction and/or restitution (entries left out keep their value). The contacts this
+   * body is in take the new mix from the next step on.
+   */
+  setMaterial(material: Partial<Material>): this {
+    const fn = 'Body.setMaterial';
+    if (material === null || typeof material !== 'object') {
+      throw new TypeError(`${fn}: argument 'material' must be an object { friction?, restitution? }, got ${material === null ? 'null' : typeof material}`);
+    }
+    this.materialValue = checkMaterial({ ...this.materialValue, ...material }, fn);
+    this.owner?.onMaterialChanged(this);
     return this;
   }
 

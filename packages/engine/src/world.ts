@@ -197,6 +197,9 @@ export class World {
       this.broadphase.setStatic(body.proxyId, body.motion === MOTION_STATIC);
       this.broadphase.setAwake(body.proxyId, !body.sleeping);
     },
+    onMaterialChanged: (body: Body): void => {
+      this.contacts.refreshMaterial(body);
+    },
   };
   private readonly raySource: RayCastSource = {
     shapeOf: (id) => this.bodyOfProxy[id]!.shape as unknown as QueryShape,

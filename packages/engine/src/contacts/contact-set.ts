@@ -233,15 +233,29 @@ export class ContactSet {
         this.normalImpulse.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
         this.approachSpeed.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
         this.clearPatch(slot);
-        // Mixing: geometric mean of friction, the larger restitution (Box2D's rules).
-        this.friction[slot] = Math.sqrt(A.material.friction * B.material.friction);
-        this.restitution[slot] = Math.max(A.material.restitution, B.material.restitution);
+        this.mixMaterial(slot, A, B);
         out[o++] = slot;
       }
     }
     this.orderNext = order;
     this.order = out;
     this.count = o;
+  }
+
+  /** Friction and restitution of a pair: geometric mean of friction, the larger restitution (Box2D's rules). */
+  private mixMaterial(slot: number, A: Body, B: Body): void {
+    this.friction[slot] = Math.sqrt(A.material.friction * B.material.friction);
+    this.restitution[slot] = Math.max(A.material.restitution, B.material.restitution);
+  }
+
+  /** Mixes the material of every pair of `body` again (its friction or restitution changed). */
+  refreshMaterial(body: Body): void {
+    for (let i = 0; i < this.count; i += 1) {
+      const slot = this.order[i]!;
+      const A = this.bodyA[slot]!;
+      const B = this.bodyB[slot]!;
+      if (A === body || B === body) this.mixMaterial(slot, A, B);
+    }
   }
 
   /**

@@ -42,8 +42,16 @@ export type ShapeDescription =
       readonly kind: 'convex';
       /** Vertices, n numbers each, flat. */
       readonly vertices: ArrayLike<number>;
-      /** Boundary facets (n vertex indices each, flat), or omitted for 3D triangles given as `triangles`. */
-      readonly facets?: ArrayLike<number>;
+      /** Boundary facets: n vertex indices each, flat. */
+      readonly facets: ArrayLike<number>;
+    }
+  | {
+      /** A 3D convex mesh from triangles (repeated vertices are merged), as three.js gives them. */
+      readonly kind: 'triangles';
+      /** Positions, 3 numbers each, flat. */
+      readonly positions: ArrayLike<number>;
+      /** Triangle indices (3 each), or omitted for non-indexed positions. */
+      readonly indices?: ArrayLike<number>;
     };
 
 /** A body, as data: the engine's `BodyOptions` with a shape description in place of a shape. */
@@ -119,6 +127,8 @@ export interface CommandMap {
   setAnchors: { readonly joint: HostId; readonly localA: ArrayLike<number> | null; readonly localB: ArrayLike<number> | null };
   setLimits: { readonly joint: HostId; readonly lower: number; readonly upper: number };
   setMotor: { readonly joint: HostId; readonly speed: number; readonly maxTorque: number };
+  setRest: { readonly joint: HostId; readonly rest: number };
+  setMode: { readonly joint: HostId; readonly mode: DistanceMode };
 }
 
 /** The name of a command. */
@@ -162,6 +172,11 @@ export interface StepReport {
   /** Ids of the bodies that woke in this step. */
   readonly woke: Int32Array;
   readonly wokeCount: number;
+  /**
+   * Report buffers the world's thread has created so far: two at the start (the reports travel
+   * back and forth), more only when a report outgrows them. Constant in steady state.
+   */
+  readonly buffersCreated: number;
 }
 
 /** A host event: the worker died (an error, or `terminate()` by someone else). */

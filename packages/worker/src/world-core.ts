@@ -50,7 +50,8 @@ export class WorldCore implements CommandTarget {
   private eventCount = 0;
   private broken: Int32Array<ArrayBuffer> = new Int32Array(8);
   private brokenCount = 0;
-  private sleepFlags = new Uint8Array(64);
+  /** Whether each body was asleep in the last report (1) or not (absent or 0). */
+  private readonly reportedSleep = new Map<Body, number>();
   private readonly scratchX: Float64Array;
   private readonly scratchR: Float64Array;
   private readonly onBroken = (event: { joint: Joint }): void => {
@@ -121,6 +122,7 @@ export class WorldCore implements CommandTarget {
         this.world.removeBody(body);
         this.bodies.delete(o.id);
         this.bodyIds.delete(body);
+        this.reportedSleep.delete(body);
         this.departed.set(body, o.id);
         return;
       }
@@ -173,8 +175,6 @@ export class WorldCore implements CommandTarget {
     const world = this.world;
     const list = world.bodies;
     const count = list.length;
-    if (this.sleepFlags.length < count) this.sleepFlags = new Uint8Array(Math.max(count, 2 * this.sleepFlags.length));
-    for (let i = 0; i < count; i += 1) this.sleepFlags[i] = list[i]!.isSleeping ? 1 : 0;
     this.eventCount = 0;
     this.brokenCount = 0;
     const dt = world.params.fixedTimeStep;
@@ -186,9 +186,11 @@ export class WorldCore implements CommandTarget {
     let slept = 0;
     let woke = 0;
     for (let i = 0; i < count; i += 1) {
-      const now = list[i]!.isSleeping ? 1 : 0;
-      if (now > this.sleepFlags[i]!) slept += 1;
-      else if (now < this.sleepFlags[i]!) woke += 1;
+      const body = list[i]!;
+      const now = body.isSleeping ? 1 : 0;
+      const before = this.reportedSleep.get(body) ?? 0;
+      if (now > before) slept += 1;
+      else if (now < before) woke += 1;
     }
     const counts: ReportCounts = { bodies: count, collisions: this.eventCount, broken: this.brokenCount, slept, woke };
     const need = reportBytes(this.D, counts);
@@ -292,8 +294,11 @@ export class WorldCore implements CommandTarget {
     for (let i = 0; i < c.bodies; i += 1) {
       const body = list[i]!;
       const now = body.isSleeping ? 1 : 0;
-      if (now > this.sleepFlags[i]!) ints[s++] = this.bodyIds.get(body)!;
-      else if (now < this.sleepFlags[i]!) ints[w++] = this.bodyIds.get(body)!;
+      const before = this.reportedSleep.get(body) ?? 0;
+      if (now === before) continue;
+      if (now > before) ints[s++] = this.bodyIds.get(body)!;
+      else ints[w++] = this.bodyIds.get(body)!;
+      this.reportedSleep.set(body, now);
     }
   }
 
@@ -347,6 +352,7 @@ export class WorldCore implements CommandTarget {
       at += 4;
       core.bodies.set(id, b);
       core.bodyIds.set(b, id);
+      if (b.isSleeping) core.reportedSleep.set(b, 1);
     }
     for (const j of joints) {
       const id = view.getInt32(at, true);

@@ -83,3 +83,4 @@ export {
   checkOutMatrix,
   checkOutOperator,
 } from './validate.js';
+export { rotorToQuaternion, quaternionToRotor, rotorToMatrix4, axisToBivector3, bivectorToAxis3 } from './three-conventions.js';

@@ -14,6 +14,7 @@
  */
 import { wrap } from 'comlink';
 import type { Remote } from 'comlink';
+import { angularVelocityFromMomentum } from '@physin/engine';
 import type { WorldOptions } from '@physin/engine';
 import { errorFromData } from './errors.js';
 import type { ErrorData } from './errors.js';
@@ -227,6 +228,32 @@ class Host implements WorldHost {
       );
     });
   }
+
+  angularVelocity(id: HostId, out: Float64Array = new Float64Array(this.core.D.k)): Float64Array {
+    const where = 'WorldHost.angularVelocity';
+    const D = this.core.D;
+    if (!(out instanceof Float64Array) || out.length !== D.k) throw new TypeError(`${where}: argument 'out' must be a Float64Array of length ${D.k}`);
+    const body = this.core.bodyOf(id, 'id');
+    out.fill(0);
+    const r = this.current;
+    if (r === null || body.type === 'static') return out;
+    const index = this.core.world.bodies.indexOf(body);
+    let at = -1;
+    if (index >= 0 && index < r.bodyCount && r.bodies[index * r.stride] === id) at = index * r.stride;
+    else for (let i = 0; i < r.bodyCount && at < 0; i += 1) if (r.bodies[i * r.stride] === id) at = i * r.stride;
+    if (at < 0) return out;
+    const s = this.omegaScratch ?? (this.omegaScratch = { R: new Float64Array(D.r), F: new Float64Array(D.r), L: new Float64Array(D.k), tmp: new Float64Array(D.k) });
+    for (let i = 0; i < D.r; i += 1) s.R[i] = r.bodies[at + 1 + D.n + i]!;
+    for (let i = 0; i < D.k; i += 1) s.L[i] = r.bodies[at + 1 + 2 * D.n + D.r + i]!;
+    const frame = body.shape.frameRotor;
+    if (frame !== undefined) {
+      D.kernels.mul(s.F, s.R, frame);
+      s.R.set(s.F);
+    }
+    return angularVelocityFromMomentum(D, out, s.R, body.invInertia, s.L, s.tmp);
+  }
+
+  private omegaScratch: { R: Float64Array; F: Float64Array; L: Float64Array; tmp: Float64Array } | null = null;
 
   async snapshot(): Promise<Uint8Array> {
     this.checkOpen();

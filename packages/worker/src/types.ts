@@ -210,6 +210,12 @@ export interface WorldHost {
    * doing nothing, while a step is in flight.
    */
   step(elapsed: number, maxSubSteps?: number): Promise<StepReport> | null;
+  /**
+   * The angular velocity bivector (k numbers) of body `id` in the last report, ω = I⁻¹ L from the
+   * reported rotor and momentum (the record carries L, as the specification says). Zeros before the
+   * first report.
+   */
+  angularVelocity(id: HostId, out?: Float64Array): Float64Array;
   /** The world's state as bytes (see `World.snapshot`). */
   snapshot(): Promise<Uint8Array>;
   /** Moves the running world to the other thread, through a snapshot, without a jump. */

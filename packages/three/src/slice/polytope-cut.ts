@@ -1,0 +1,265 @@
+/**
+ * The cut of an n-dimensional box by the 3-flat where the coordinates 3..n−1 take fixed values:
+ * a convex polyhedron in xyz, built by clipping with the 2n facet half-spaces of the box (each face
+ * of the cut is the cut of one facet, its normal that facet's normal projected to xyz). Fixed
+ * capacity, no allocation after construction.
+ *
+ * @module
+ */
+
+/** Numbers of room: faces, and vertices per face. */
+export interface CutCapacity {
+  readonly faces: number;
+  readonly vertices: number;
+}
+
+const EPS = 1e-12;
+
+/** A reusable clipper of convex polyhedra in 3D. */
+export class PolytopeCut {
+  /** Face polygons: 3 numbers per vertex, `vertices` vertices of room per face. */
+  private readonly poly: Float64Array[];
+  private readonly count: Int32Array;
+  /** Outward unit normal of each face. */
+  private readonly normal: Float64Array;
+  private faces = 0;
+  private readonly maxFaces: number;
+  private readonly maxVerts: number;
+  private readonly temp: Float64Array;
+  private readonly cap: Float64Array;
+  private readonly angle: Float64Array;
+  private readonly order: Int32Array;
+
+  constructor(capacity: CutCapacity) {
+    this.maxFaces = capacity.faces;
+    this.maxVerts = capacity.vertices;
+    this.poly = [];
+    for (let f = 0; f < capacity.faces; f += 1) this.poly.push(new Float64Array(3 * capacity.vertices));
+    this.count = new Int32Array(capacity.faces);
+    this.normal = new Float64Array(3 * capacity.faces);
+    this.temp = new Float64Array(3 * capacity.vertices);
+    this.cap = new Float64Array(6 * capacity.faces);
+    this.angle = new Float64Array(2 * capacity.faces);
+    this.order = new Int32Array(2 * capacity.faces);
+  }
+
+  /** Starts from the cube [−s, s]³. */
+  reset(s: number): void {
+    this.faces = 0;
+    const cube = [
+      [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1],
+    ] as const;
+    for (const [nx, ny, nz] of cube) {
+      const f = this.faces++;
+      this.normal[3 * f] = nx;
+      this.normal[3 * f + 1] = ny;
+      this.normal[3 * f + 2] = nz;
+      // four corners, counter-clockwise seen from outside
+      const axis = nx !== 0 ? 0 : ny !== 0 ? 1 : 2;
+      const sign = nx + ny + nz;
+      const u = (axis + 1) % 3;
+      const v = (axis + 2) % 3;
+      const p = this.poly[f]!;
+      const corners = sign > 0 ? [[-1, -1], [1, -1], [1, 1], [-1, 1]] : [[-1, -1], [-1, 1], [1, 1], [1, -1]];
+      for (let c = 0; c < 4; c += 1) {
+        p[3 * c + axis] = sign * s;
+        p[3 * c + u] = corners[c]![0]! * s;
+        p[3 * c + v] = corners[c]![1]! * s;
+      }
+      this.count[f] = 4;
+    }
+  }
+
+  /** Face count after the last clip. */
+  get faceCount(): number {
+    return this.faces;
+  }
+
+  /**
+   * Keeps the part where n·u ≤ d (n a unit vector, the outward normal of the new face). Returns
+   * false when nothing is left.
+   */
+  clip(nx: number, ny: number, nz: number, d: number): boolean {
+    let capCount = 0;
+    let out = 0;
+    for (let f = 0; f < this.faces; f += 1) {
+      const p = this.poly[f]!;
+      const c = this.count[f]!;
+      const t = this.temp;
+      let m = 0;
+      for (let i = 0; i < c; i += 1) {
+        const j = (i + 1) % c;
+        const ax = p[3 * i]!;
+        const ay = p[3 * i + 1]!;
+        const az = p[3 * i + 2]!;
+        const bx = p[3 * j]!;
+        const by = p[3 * j + 1]!;
+        const bz = p[3 * j + 2]!;
+        const da = nx * ax + ny * ay + nz * az - d;
+        const db = nx * bx + ny * by + nz * bz - d;
+        if (da <= 0) {
+          t[3 * m] = ax;
+          t[3 * m + 1] = ay;
+          t[3 * m + 2] = az;
+          m += 1;
+        }
+        if ((da < 0 && db > 0) || (da > 0 && db < 0)) {
+          const s = da / (da - db);
+          const x = ax + s * (bx - ax);
+          const y = ay + s * (by - ay);
+          const z = az + s * (bz - az);
+          t[3 * m] = x;
+          t[3 * m + 1] = y;
+          t[3 * m + 2] = z;
+          m += 1;
+          if (capCount < this.cap.length / 3) {
+            this.cap[3 * capCount] = x;
+            this.cap[3 * capCount + 1] = y;
+            this.cap[3 * capCount + 2] = z;
+            capCount += 1;
+          }
+        } else if (da === 0 && capCount < this.cap.length / 3) {
+          this.cap[3 * capCount] = ax;
+          this.cap[3 * capCount + 1] = ay;
+          this.cap[3 * capCount + 2] = az;
+          capCount += 1;
+        }
+      }
+      if (m >= 3) {
+        // keep the face (compacted to slot `out`)
+        const q = this.poly[out]!;
+        if (out !== f) {
+          this.poly[out] = p;
+          this.poly[f] = q;
+        }
+        this.poly[out]!.set(t.subarray(0, 3 * Math.min(m, this.maxVerts)));
+        this.count[out] = Math.min(m, this.maxVerts);
+        this.normal[3 * out] = this.normal[3 * f]!;
+        this.normal[3 * out + 1] = this.normal[3 * f + 1]!;
+        this.normal[3 * out + 2] = this.normal[3 * f + 2]!;
+        out += 1;
+      }
+    }
+    this.faces = out;
+    if (out === 0) return false;
+    if (capCount >= 3 && this.faces < this.maxFaces) this.addCap(nx, ny, nz, capCount);
+    return true;
+  }
+
+  /** Adds the new face: the cut points, without repeats, in counter-clockwise order about n. */
+  private addCap(nx: number, ny: number, nz: number, capCount: number): void {
+    const c = this.cap;
+    let cx = 0;
+    let cy = 0;
+    let cz = 0;
+    for (let i = 0; i < capCount; i += 1) {
+      cx += c[3 * i]!;
+      cy += c[3 * i + 1]!;
+      cz += c[3 * i + 2]!;
+    }
+    cx /= capCount;
+    cy /= capCount;
+    cz /= capCount;
+    // a basis (e1, e2) of the plane with e1 × e2 = n
+    let ex = Math.abs(nx) < 0.9 ? 1 : 0;
+    let ey = ex === 1 ? 0 : 1;
+    let ez = 0;
+    const dot = ex * nx + ey * ny + ez * nz;
+    ex -= dot * nx;
+    ey -= dot * ny;
+    ez -= dot * nz;
+    const len = Math.hypot(ex, ey, ez);
+    ex /= len;
+    ey /= len;
+    ez /= len;
+    const fx = ny * ez - nz * ey;
+    const fy = nz * ex - nx * ez;
+    const fz = nx * ey - ny * ex;
+    let unique = 0;
+    for (let i = 0; i < capCount; i += 1) {
+      const x = c[3 * i]!;
+      const y = c[3 * i + 1]!;
+      const z = c[3 * i + 2]!;
+      let seen = false;
+      for (let k = 0; k < unique && !seen; k += 1) {
+        const o = this.order[k]!;
+        seen = Math.abs(c[3 * o]! - x) + Math.abs(c[3 * o + 1]! - y) + Math.abs(c[3 * o + 2]! - z) < 1e-9;
+      }
+      if (seen) continue;
+      this.order[unique] = i;
+      this.angle[unique] = Math.atan2((x - cx) * fx + (y - cy) * fy + (z - cz) * fz, (x - cx) * ex + (y - cy) * ey + (z - cz) * ez);
+      unique += 1;
+    }
+    if (unique < 3) return;
+    // insertion sort by angle (a handful of points)
+    for (let i = 1; i < unique; i += 1) {
+      const a = this.angle[i]!;
+      const o = this.order[i]!;
+      let j = i - 1;
+      while (j >= 0 && this.angle[j]! > a) {
+        this.angle[j + 1] = this.angle[j]!;
+        this.order[j + 1] = this.order[j]!;
+        j -= 1;
+      }
+      this.angle[j + 1] = a;
+      this.order[j + 1] = o;
+    }
+    const f = this.faces++;
+    const p = this.poly[f]!;
+    const m = Math.min(unique, this.maxVerts);
+    for (let k = 0; k < m; k += 1) {
+      const o = this.order[k]!;
+      p[3 * k] = c[3 * o]!;
+      p[3 * k + 1] = c[3 * o + 1]!;
+      p[3 * k + 2] = c[3 * o + 2]!;
+    }
+    this.count[f] = m;
+    this.normal[3 * f] = nx;
+    this.normal[3 * f + 1] = ny;
+    this.normal[3 * f + 2] = nz;
+  }
+
+  /**
+   * Writes the faces as triangles (a fan per face, flat normals) into `positions` and `normals`
+   * (3 numbers per vertex) and returns the vertex count written.
+   */
+  writeTriangles(positions: Float32Array, normals: Float32Array): number {
+    let v = 0;
+    const room = positions.length / 3;
+    for (let f = 0; f < this.faces; f += 1) {
+      const p = this.poly[f]!;
+      const c = this.count[f]!;
+      const nx = this.normal[3 * f]!;
+      const ny = this.normal[3 * f + 1]!;
+      const nz = this.normal[3 * f + 2]!;
+      for (let i = 1; i + 1 < c && v + 3 <= room; i += 1) {
+        for (let corner = 0; corner < 3; corner += 1) {
+          const k = corner === 0 ? 0 : corner === 1 ? i : i + 1;
+          positions[3 * v] = p[3 * k]!;
+          positions[3 * v + 1] = p[3 * k + 1]!;
+          positions[3 * v + 2] = p[3 * k + 2]!;
+          normals[3 * v] = nx;
+          normals[3 * v + 1] = ny;
+          normals[3 * v + 2] = nz;
+          v += 1;
+        }
+      }
+    }
+    return v;
+  }
+
+  /** The vertices of face f (for tests): 3 numbers each. */
+  faceVertices(f: number): Float64Array {
+    return this.poly[f]!.subarray(0, 3 * this.count[f]!);
+  }
+
+  /** The outward normal of face f (for tests). */
+  faceNormal(f: number): Float64Array {
+    return this.normal.subarray(3 * f, 3 * f + 3);
+  }
+}
+
+/** Whether |x| is small enough to call zero. */
+export function isTiny(x: number): boolean {
+  return Math.abs(x) < EPS;
+}

@@ -12,7 +12,7 @@
  *
  * @module
  */
-import { wrap } from 'comlink';
+import { transfer, wrap } from 'comlink';
 import type { Remote } from 'comlink';
 import { angularVelocityFromMomentum } from '@physin/engine';
 import type { WorldOptions } from '@physin/engine';
@@ -122,7 +122,30 @@ class Host implements WorldHost {
   }
 
   get busy(): boolean {
-    return this.inFlight;
+    return this.inFlight || this.starting;
+  }
+
+  /** True while the first worker starts (steps are refused; descriptions and commands queue). */
+  private starting = false;
+  ready: Promise<void> = Promise.resolve();
+
+  /** Starts the worker of a new world in the background; `ready` settles when it answers. */
+  startInBackground(): void {
+    this.starting = true;
+    this.ready = this.attachWorker(null).then(
+      () => {
+        this.starting = false;
+        if (this.disposed) this.endWorker();
+      },
+      (error: unknown) => {
+        this.starting = false;
+        const failure = error instanceof Error ? error : new Error(String(error));
+        this.onDeath(failure);
+        throw failure;
+      },
+    );
+    // the `died` event reports a failure to whoever does not await `ready`
+    this.ready.catch(() => undefined);
   }
 
   /** Runs `o` here (main) or on the shadow and queues it (worker). */
@@ -171,7 +194,7 @@ class Host implements WorldHost {
     const max = maxSubSteps === undefined ? Math.max(1, Math.ceil(elapsed / fixed - 1e-9)) : maxSubSteps;
     if (typeof max !== 'number') throw new TypeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${typeof max}`);
     if (!Number.isInteger(max) || max < 1) throw new RangeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${max}`);
-    if (this.inFlight) return null;
+    if (this.inFlight || this.starting) return null;
     if (this.dead) return Promise.reject(new Error('WorldHost.step: the worker died; call restart()'));
     return this.mode === 'main' ? this.stepHere(elapsed, max) : this.stepThere(elapsed, max);
   }
@@ -197,7 +220,9 @@ class Host implements WorldHost {
     this.inFlight = true;
     return new Promise<StepReport>((resolve, reject) => {
       this.pendingReject = reject;
-      link.api.step(ops, elapsed, max, send).then(
+      // the spare buffer travels as a transferable: moved, never copied
+      const request = send === null ? link.api.step(ops, elapsed, max, null) : link.api.step(ops, elapsed, max, transfer(send, [send]));
+      request.then(
         (answer) => {
           this.inFlight = false;
           this.pendingReject = null;
@@ -257,7 +282,7 @@ class Host implements WorldHost {
 
   async snapshot(): Promise<Uint8Array> {
     this.checkOpen();
-    if (this.inFlight) throw new RangeError('WorldHost.snapshot: a step is in flight; wait for it');
+    if (this.inFlight || this.starting) throw new RangeError('WorldHost.snapshot: a step is in flight or the worker is starting; wait for it');
     let bytes: Uint8Array;
     if (this.mode === 'main') {
       bytes = this.core.snapshot();
@@ -361,13 +386,24 @@ class Host implements WorldHost {
  * its host. `options` are `new World`'s; they are checked here, in the caller's thread.
  */
 export async function openWorld(options: WorldOptions, hostOptions: HostOptions = {}): Promise<WorldHost> {
+  const host = createWorld(options, hostOptions);
+  await host.ready;
+  return host;
+}
+
+/**
+ * Like `openWorld`, but returns the host at once: in worker mode the worker starts in the
+ * background (`host.ready` settles when it answers; until then `step` returns null and everything
+ * else is validated here and queued). Bad options throw here, synchronously.
+ */
+export function createWorld(options: WorldOptions, hostOptions: HostOptions = {}): WorldHost {
   if (hostOptions === null || typeof hostOptions !== 'object') {
-    throw new TypeError(`openWorld: argument 'hostOptions' must be an object { thread?, worker? }, got ${hostOptions === null ? 'null' : typeof hostOptions}`);
+    throw new TypeError(`createWorld: argument 'hostOptions' must be an object { thread?, worker? }, got ${hostOptions === null ? 'null' : typeof hostOptions}`);
   }
   const thread = hostOptions.thread ?? (hostOptions.worker !== undefined ? 'worker' : 'main');
-  if (thread !== 'main' && thread !== 'worker') throw new RangeError(`openWorld: option 'thread' must be 'main' or 'worker', got ${String(thread)}`);
+  if (thread !== 'main' && thread !== 'worker') throw new RangeError(`createWorld: option 'thread' must be 'main' or 'worker', got ${String(thread)}`);
   const core = WorldCore.create(options);
   const host = new Host(options, core, thread, hostOptions.worker);
-  if (thread === 'worker') await host.attachWorker(null);
+  if (thread === 'worker') host.startInBackground();
   return host;
 }

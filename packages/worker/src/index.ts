@@ -5,6 +5,6 @@
  *
  * @module
  */
-export { openWorld } from './host.js';
+export { openWorld, createWorld } from './host.js';
 export { COMMAND_NAMES } from './commands.js';
 export type * from './types.js';

@@ -192,8 +192,13 @@ export interface WorldHost {
   readonly thread: ThreadKind;
   /** Count of dimensions n. */
   readonly dimensions: number;
-  /** True while a step is in flight (then `step` returns null). */
+  /** True while a step is in flight or the worker starts (then `step` returns null). */
   readonly busy: boolean;
+  /**
+   * Settles when the world can step: at once in the main thread, when the worker answers
+   * otherwise (it rejects, and `died` fires, if the worker cannot start).
+   */
+  readonly ready: Promise<void>;
   /** Adds a body; the id is assigned here and returned at once. Throws on bad input (nothing queued). */
   addBody(description: BodyDescription): HostId;
   /** Removes a body (and the joints that hold it). */

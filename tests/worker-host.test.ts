@@ -98,6 +98,7 @@ describe('the report', () => {
       for (let i = 0; i < 120; i += 1) r = (await host.step(1 / 60))!;
       const warm = r.buffersCreated;
       const buffers = new Set<ArrayBufferLike>();
+      const seen: ArrayBufferLike[] = [];
       for (let i = 0; i < 300; i += 1) {
         const p = host.step(1 / 60)!;
         if (thread === 'worker') {
@@ -106,7 +107,11 @@ describe('the report', () => {
         }
         r = await p;
         buffers.add(r.bodies.buffer);
+        seen.push(r.bodies.buffer);
       }
+      // worker: each report's buffer went back with the step after next, moved (detached here),
+      // not copied
+      if (thread === 'worker') expect(seen.slice(0, -2).filter((b) => b.byteLength !== 0)).toHaveLength(0);
       expect(r.buffersCreated).toBe(warm);
       expect(warm).toBeLessThanOrEqual(thread === 'main' ? 2 : 4);
       if (thread === 'main') expect(buffers.size).toBe(1);

@@ -134,7 +134,13 @@ export class HyperSphereMesh extends HyperShapeMesh {
     if (this._x!.length < 4) return;
     const s = this.radius * this.radius - flatDistanceSquared(this._x!, slice);
     this.visible = s > 0;
-    if (s > 0) this.scale.setScalar(Math.sqrt(s));
+    if (s > 0) {
+      // field stores, not setScalar(r): a double passed to a call that is not inlined is boxed
+      const r = Math.sqrt(s);
+      this.scale.x = r;
+      this.scale.y = r;
+      this.scale.z = r;
+    }
   }
 }
 
@@ -180,7 +186,7 @@ export class HyperPlaneMesh extends HyperShapeMesh {
   updateSlice(slice: Float64Array): void {
     const N = this.normal;
     if (N.length < 4) return;
-    if (Math.hypot(N[0]!, N[1]!, N[2]!) > 1e-9) {
+    if (N[0]! * N[0]! + N[1]! * N[1]! + N[2]! * N[2]! > 1e-18) {
       this.visible = true;
       return;
     }

@@ -383,7 +383,11 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   private writePositionFromX(): void {
     const x = this._x!;
-    this.position.set(x[0]!, x[1]!, x.length >= 3 ? x[2]! : 0);
+    // field stores rather than set(x, y, z): no boxed double arguments on the per-frame path
+    const p = this.position;
+    p.x = x[0]!;
+    p.y = x[1]!;
+    p.z = x.length >= 3 ? x[2]! : 0;
   }
 
   /** n = 3: the quaternion of the rotor; n = 2: the turn about z; n ≥ 4: the slice carries the turn. */
@@ -403,13 +407,13 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     const R = this._R!;
     const q = this.quaternion;
     if (R.length === 4) {
-      const len = Math.hypot(q.x, q.y, q.z, q.w);
+      const len = Math.sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
       if (!(len > 0) || !Number.isFinite(len)) throw new RangeError(`${this.constructor.name}: mesh.quaternion must be a finite non-zero quaternion`);
       const s = this.scratchQ;
       s[0] = q.x / len; s[1] = q.y / len; s[2] = q.z / len; s[3] = q.w / len;
       quaternionToRotor(R, s);
     } else if (R.length === 2) {
-      const len = Math.hypot(q.z, q.w);
+      const len = Math.sqrt(q.z * q.z + q.w * q.w);
       if (!(len > 0) || !Number.isFinite(len)) throw new RangeError(`${this.constructor.name}: mesh.quaternion must turn about z in 2D`);
       R[0] = q.w / len;
       R[1] = -q.z / len;

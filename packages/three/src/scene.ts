@@ -64,7 +64,9 @@ export class Scene extends THREE.Scene<SceneEventMap> {
   private readonly bodies: Mesh[] = [];
   private readonly byId = new Map<HostId, Mesh>();
   private readonly joints = new Map<HostId, Joint>();
-  private readonly dirty: HyperShapeMesh[] = [];
+  /** Meshes to re-slice: the first `dirtyCount` slots (the array is reused, never emptied). */
+  private readonly dirty: (HyperShapeMesh | null)[] = [];
+  private dirtyCount = 0;
   private readonly newcomers: Mesh[] = [];
   private readonly lastSlice: Float64Array;
   private readonly M: Float64Array;
@@ -176,7 +178,7 @@ export class Scene extends THREE.Scene<SceneEventMap> {
     this.byId.delete(id);
     removeItem(this.bodies, mesh);
     removeItem(this.newcomers, mesh);
-    if (mesh instanceof HyperShapeMesh) removeItem(this.dirty, mesh);
+    if (mesh instanceof HyperShapeMesh) mesh._sliceDirty = false;
     mesh.unbindBody();
   }
 
@@ -265,7 +267,8 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       const mesh = bodies[i]!;
       if (mesh instanceof HyperShapeMesh) this.sliceOne(mesh);
     }
-    this.dirty.length = 0;
+    for (let i = 0; i < this.dirtyCount; i += 1) this.dirty[i] = null;
+    this.dirtyCount = 0;
     this.lastSlice.set(this.slice);
   }
 
@@ -289,7 +292,8 @@ export class Scene extends THREE.Scene<SceneEventMap> {
     const { bodies, stride } = report;
     for (let i = 0; i < report.bodyCount; i += 1) {
       const at = i * stride;
-      const mesh = this.byId.get(bodies[at]!);
+      // `| 0`: an integer key, not a boxed double from the Float32Array
+      const mesh = this.byId.get(bodies[at]! | 0);
       if (mesh !== undefined) mesh.readRecord(bodies, at, n, r);
     }
     this.fireCollisions(report);
@@ -302,8 +306,10 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       joint.dispatchEvent({ type: 'broken' });
     }
     this.sliceChanged();
-    for (let i = 0; i < this.newcomers.length; i += 1) this.newcomers[i]!.dispatchEvent({ type: 'ready' });
-    this.newcomers.length = 0;
+    if (this.newcomers.length > 0) {
+      for (let i = 0; i < this.newcomers.length; i += 1) this.newcomers[i]!.dispatchEvent({ type: 'ready' });
+      this.newcomers.length = 0;
+    }
     this.emit(this.updateEvent);
   }
 
@@ -312,8 +318,8 @@ export class Scene extends THREE.Scene<SceneEventMap> {
     const c = report.collisions;
     for (let i = 0; i < report.collisionCount; i += 1) {
       const at = i * report.collisionStride;
-      const a = this.byId.get(c[at + 1]!);
-      const b = this.byId.get(c[at + 2]!);
+      const a = this.byId.get(c[at + 1]! | 0);
+      const b = this.byId.get(c[at + 2]! | 0);
       if (a === undefined || b === undefined) continue;
       const phase = c[at] === 0 ? 'begin' : 'end';
       const impulse = c[at + 3]!;
@@ -328,7 +334,9 @@ export class Scene extends THREE.Scene<SceneEventMap> {
   private markSliceDirty(mesh: Mesh): void {
     if (!(mesh instanceof HyperShapeMesh) || this.dimensions < 4 || mesh._sliceDirty) return;
     mesh._sliceDirty = true;
-    this.dirty.push(mesh);
+    if (this.dirtyCount < this.dirty.length) this.dirty[this.dirtyCount] = mesh;
+    else this.dirty.push(mesh);
+    this.dirtyCount += 1;
   }
 
   /** Re-slices the meshes that moved, or all of them when the flat moved. */
@@ -341,8 +349,13 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       return;
     }
     const dirty = this.dirty;
-    for (let i = 0; i < dirty.length; i += 1) this.sliceOne(dirty[i]!);
-    dirty.length = 0;
+    for (let i = 0; i < this.dirtyCount; i += 1) {
+      const mesh = dirty[i]!;
+      dirty[i] = null;
+      // a mesh removed since it was marked is no longer dirty
+      if (mesh._sliceDirty) this.sliceOne(mesh);
+    }
+    this.dirtyCount = 0;
   }
 
   private sliceOne(mesh: HyperShapeMesh): void {

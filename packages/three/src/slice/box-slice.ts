@@ -39,7 +39,8 @@ export class BoxSlicer {
     const cut = this.cut;
     let radius = 0;
     for (let i = 0; i < n; i += 1) radius += he[i]! * he[i]!;
-    cut.reset(Math.sqrt(radius) * 1.01 + 1e-6);
+    cut.plane[3] = Math.sqrt(radius) * 1.01 + 1e-6;
+    cut.resetToCube();
     for (let i = 0; i < n; i += 1) {
       // body coordinate i of the point u (relative to x) of the flat: a·u + b
       const ax = M[0 * n + i]!;
@@ -47,14 +48,23 @@ export class BoxSlicer {
       const az = M[2 * n + i]!;
       let b = 0;
       for (let row = 3; row < n; row += 1) b += M[row * n + i]! * (slice[row - 3]! - x[row]!);
-      const len = Math.hypot(ax, ay, az);
+      const len = Math.sqrt(ax * ax + ay * ay + az * az);
       const h = he[i]!;
       if (len < 1e-12) {
         if (Math.abs(b) > h) return 0;
         continue;
       }
-      if (!cut.clip(ax / len, ay / len, az / len, (h - b) / len)) return 0;
-      if (!cut.clip(-ax / len, -ay / len, -az / len, (h + b) / len)) return 0;
+      const plane = cut.plane;
+      plane[0] = ax / len;
+      plane[1] = ay / len;
+      plane[2] = az / len;
+      plane[3] = (h - b) / len;
+      if (!cut.clipByPlane()) return 0;
+      plane[0] = -ax / len;
+      plane[1] = -ay / len;
+      plane[2] = -az / len;
+      plane[3] = (h + b) / len;
+      if (!cut.clipByPlane()) return 0;
     }
     return cut.writeTriangles(positions, normals);
   }

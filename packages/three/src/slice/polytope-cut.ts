@@ -14,6 +14,9 @@ export interface CutCapacity {
 }
 
 const EPS = 1e-12;
+/** (u, v) corners of a cube face, counter-clockwise seen from outside, for a + and a − face. */
+const CORNERS_OUT = [-1, -1, 1, -1, 1, 1, -1, 1] as const;
+const CORNERS_IN = [-1, -1, -1, 1, 1, 1, 1, -1] as const;
 
 /** A reusable clipper of convex polyhedra in 3D. */
 export class PolytopeCut {
@@ -29,6 +32,8 @@ export class PolytopeCut {
   private readonly cap: Float64Array;
   private readonly angle: Float64Array;
   private readonly order: Int32Array;
+  /** The plane of the next `clipByPlane`: outward unit normal (3) and offset d. */
+  readonly plane = new Float64Array(4);
 
   constructor(capacity: CutCapacity) {
     this.maxFaces = capacity.faces;
@@ -45,29 +50,33 @@ export class PolytopeCut {
 
   /** Starts from the cube [−s, s]³. */
   reset(s: number): void {
+    this.plane[3] = s;
+    this.resetToCube();
+  }
+
+  /** `reset` with s read from `plane[3]` (no boxed argument on the hot path). */
+  resetToCube(): void {
+    const s = this.plane[3]!;
     this.faces = 0;
-    const cube = [
-      [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1],
-    ] as const;
-    for (const [nx, ny, nz] of cube) {
-      const f = this.faces++;
-      this.normal[3 * f] = nx;
-      this.normal[3 * f + 1] = ny;
-      this.normal[3 * f + 2] = nz;
+    for (let f = 0; f < 6; f += 1) {
+      const axis = f >> 1;
+      const sign = (f & 1) === 0 ? 1 : -1;
+      this.normal[3 * f] = axis === 0 ? sign : 0;
+      this.normal[3 * f + 1] = axis === 1 ? sign : 0;
+      this.normal[3 * f + 2] = axis === 2 ? sign : 0;
       // four corners, counter-clockwise seen from outside
-      const axis = nx !== 0 ? 0 : ny !== 0 ? 1 : 2;
-      const sign = nx + ny + nz;
       const u = (axis + 1) % 3;
       const v = (axis + 2) % 3;
       const p = this.poly[f]!;
-      const corners = sign > 0 ? [[-1, -1], [1, -1], [1, 1], [-1, 1]] : [[-1, -1], [-1, 1], [1, 1], [1, -1]];
+      const corners = sign > 0 ? CORNERS_OUT : CORNERS_IN;
       for (let c = 0; c < 4; c += 1) {
         p[3 * c + axis] = sign * s;
-        p[3 * c + u] = corners[c]![0]! * s;
-        p[3 * c + v] = corners[c]![1]! * s;
+        p[3 * c + u] = corners[2 * c]! * s;
+        p[3 * c + v] = corners[2 * c + 1]! * s;
       }
       this.count[f] = 4;
     }
+    this.faces = 6;
   }
 
   /** Face count after the last clip. */
@@ -80,6 +89,23 @@ export class PolytopeCut {
    * false when nothing is left.
    */
   clip(nx: number, ny: number, nz: number, d: number): boolean {
+    const plane = this.plane;
+    plane[0] = nx;
+    plane[1] = ny;
+    plane[2] = nz;
+    plane[3] = d;
+    return this.clipByPlane();
+  }
+
+  /**
+   * `clip` by the plane in `plane` (nx, ny, nz, d). Hot callers write the plane there and call
+   * this: a double passed to a function that is not inlined is boxed, one allocation per number.
+   */
+  clipByPlane(): boolean {
+    const nx = this.plane[0]!;
+    const ny = this.plane[1]!;
+    const nz = this.plane[2]!;
+    const d = this.plane[3]!;
     let capCount = 0;
     let out = 0;
     for (let f = 0; f < this.faces; f += 1) {
@@ -132,8 +158,10 @@ export class PolytopeCut {
           this.poly[out] = p;
           this.poly[f] = q;
         }
-        this.poly[out]!.set(t.subarray(0, 3 * Math.min(m, this.maxVerts)));
-        this.count[out] = Math.min(m, this.maxVerts);
+        const kept = Math.min(m, this.maxVerts);
+        const target = this.poly[out]!;
+        for (let i = 0; i < 3 * kept; i += 1) target[i] = t[i]!;
+        this.count[out] = kept;
         this.normal[3 * out] = this.normal[3 * f]!;
         this.normal[3 * out + 1] = this.normal[3 * f + 1]!;
         this.normal[3 * out + 2] = this.normal[3 * f + 2]!;
@@ -142,12 +170,15 @@ export class PolytopeCut {
     }
     this.faces = out;
     if (out === 0) return false;
-    if (capCount >= 3 && this.faces < this.maxFaces) this.addCap(nx, ny, nz, capCount);
+    if (capCount >= 3 && this.faces < this.maxFaces) this.addCap(capCount);
     return true;
   }
 
   /** Adds the new face: the cut points, without repeats, in counter-clockwise order about n. */
-  private addCap(nx: number, ny: number, nz: number, capCount: number): void {
+  private addCap(capCount: number): void {
+    const nx = this.plane[0]!;
+    const ny = this.plane[1]!;
+    const nz = this.plane[2]!;
     const c = this.cap;
     let cx = 0;
     let cy = 0;
@@ -168,7 +199,7 @@ export class PolytopeCut {
     ex -= dot * nx;
     ey -= dot * ny;
     ez -= dot * nz;
-    const len = Math.hypot(ex, ey, ez);
+    const len = Math.sqrt(ex * ex + ey * ey + ez * ez);
     ex /= len;
     ey /= len;
     ez /= len;

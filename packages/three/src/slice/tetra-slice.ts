@@ -105,7 +105,7 @@ export class TetraSlicer {
         ny += M[4 + c]! * b;
         nz += M[8 + c]! * b;
       }
-      const len = Math.hypot(nx, ny, nz);
+      const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
       if (len < 1e-12) continue;
       nx /= len; ny /= len; nz /= len;
       if (at + 9 * (count - 2) > limit) break;
@@ -113,7 +113,7 @@ export class TetraSlicer {
       // a quad's crossings in cyclic order are 0-1-3-2
       if (count === 4) at = this.triangle(positions, normals, at, 1, 3, 2, nx, ny, nz);
     }
-    return at / 3;
+    return (at / 3) | 0;
   }
 
   private triangle(positions: Float32Array, normals: Float32Array, at: number, a: number, b: number, c: number, nx: number, ny: number, nz: number): number {

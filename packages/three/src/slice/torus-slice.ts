@@ -15,7 +15,7 @@
 const MAJOR_SEGMENTS = 48;
 const MINOR_SEGMENTS = 16;
 /** Cells per side of the marching grid. */
-const GRID = 24;
+const GRID = 20;
 /** Corner offsets of the unit cube, and its split into six tetrahedra along the main diagonal. */
 const CORNER = [
   [0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1],
@@ -48,6 +48,8 @@ export class TorusSlicer {
   private readonly point: Float64Array;
   private readonly p: Float64Array;
   private readonly g: Float64Array;
+  /** A point of the flat (px, py, pz) and f there, for `field`. */
+  private readonly q = new Float64Array(4);
 
   constructor(n: number) {
     this.n = n;
@@ -85,7 +87,10 @@ export class TorusSlicer {
   private sliceExact(positions: Float32Array, normals: Float32Array, pose: TorusPose, slice: ArrayLike<number>): number {
     const n = this.n;
     let d2 = 0;
-    for (let a = 3; a < n; a += 1) d2 += (slice[a - 3]! - pose.x[a]!) ** 2;
+    for (let a = 3; a < n; a += 1) {
+      const d = slice[a - 3]! - pose.x[a]!;
+      d2 += d * d;
+    }
     const s = pose.minorRadius * pose.minorRadius - d2;
     if (s <= 0) return 0;
     const tube = Math.sqrt(s);
@@ -99,23 +104,27 @@ export class TorusSlicer {
     frame[0] = ux; frame[1] = uy; frame[2] = uz;
     frame[3] = vx; frame[4] = vy; frame[5] = vz;
     frame[6] = wx; frame[7] = wy; frame[8] = wz;
+    // the radii travel in the scratch too: doubles passed as arguments would be boxed
+    frame[9] = R; frame[10] = tube;
     let at = 0;
     for (let i = 0; i < MAJOR_SEGMENTS; i += 1) {
       for (let j = 0; j < MINOR_SEGMENTS; j += 1) {
-        at = this.ring(positions, normals, at, R, tube, i, j);
-        at = this.ring(positions, normals, at, R, tube, i + 1, j);
-        at = this.ring(positions, normals, at, R, tube, i + 1, j + 1);
-        at = this.ring(positions, normals, at, R, tube, i, j);
-        at = this.ring(positions, normals, at, R, tube, i + 1, j + 1);
-        at = this.ring(positions, normals, at, R, tube, i, j + 1);
+        at = this.ring(positions, normals, at, i, j);
+        at = this.ring(positions, normals, at, i + 1, j);
+        at = this.ring(positions, normals, at, i + 1, j + 1);
+        at = this.ring(positions, normals, at, i, j);
+        at = this.ring(positions, normals, at, i + 1, j + 1);
+        at = this.ring(positions, normals, at, i, j + 1);
       }
     }
-    return at / 3;
+    return (at / 3) | 0;
   }
 
-  /** One vertex of the exact torus at grid (i, j); the frame u, v, w is in `p[0..8]`. */
-  private ring(positions: Float32Array, normals: Float32Array, at: number, R: number, tube: number, i: number, j: number): number {
+  /** One vertex of the exact torus at grid (i, j); frame u, v, w in `p[0..8]`, R and tube in `p[9..10]`. */
+  private ring(positions: Float32Array, normals: Float32Array, at: number, i: number, j: number): number {
     const f = this.p;
+    const R = f[9]!;
+    const tube = f[10]!;
     const a = (2 * Math.PI * i) / MAJOR_SEGMENTS;
     const b = (2 * Math.PI * j) / MINOR_SEGMENTS;
     const ca = Math.cos(a), sa = Math.sin(a), cb = Math.cos(b), sb = Math.sin(b);
@@ -132,11 +141,16 @@ export class TorusSlicer {
   }
 
   /**
-   * f at the flat's point (x0 + px, x1 + py, x2 + pz, slice…): the torus's distance function
-   * (ρ − R)² + Σ others − r², in body coordinates. Leaves ∂f/∂(px, py, pz) in `grad[0..2]`.
+   * f at the flat's point (x0 + px, x1 + py, x2 + pz, slice…), (px, py, pz) read from `q[0..2]`:
+   * the torus's distance function (ρ − R)² + Σ others − r², in body coordinates. Writes f to
+   * `q[3]` and ∂f/∂(px, py, pz) to `point` (through scratch, as a double argument or result of a
+   * call that is not inlined is boxed).
    */
-  private field(pose: TorusPose, slice: ArrayLike<number>, px: number, py: number, pz: number): number {
+  private field(pose: TorusPose, slice: ArrayLike<number>): void {
     const n = this.n;
+    const px = this.q[0]!;
+    const py = this.q[1]!;
+    const pz = this.q[2]!;
     const M = pose.M;
     const local = this.local;
     // body coordinates ξ = Mᵀ (X − x)
@@ -146,7 +160,7 @@ export class TorusSlicer {
       local[c] = s;
     }
     const i = pose.planeI, j = pose.planeJ;
-    const rho = Math.hypot(local[i]!, local[j]!);
+    const rho = Math.sqrt(local[i]! * local[i]! + local[j]! * local[j]!);
     const R = pose.majorRadius;
     let f = (rho - R) * (rho - R) - pose.minorRadius * pose.minorRadius;
     const grad = this.grad;
@@ -165,13 +179,16 @@ export class TorusSlicer {
       for (let c = 0; c < n; c += 1) s += M[row * n + c]! * grad[c]!;
       point[row] = s;
     }
-    return f;
+    this.q[3] = f;
   }
 
   /** Marching tetrahedra over a grid that holds the torus's bound. */
   private sliceMarching(positions: Float32Array, normals: Float32Array, pose: TorusPose, slice: ArrayLike<number>): number {
     let d2 = 0;
-    for (let a = 3; a < this.n; a += 1) d2 += (slice[a - 3]! - pose.x[a]!) ** 2;
+    for (let a = 3; a < this.n; a += 1) {
+      const d = slice[a - 3]! - pose.x[a]!;
+      d2 += d * d;
+    }
     const bound = pose.majorRadius + pose.minorRadius;
     if (d2 >= bound * bound) return 0;
     const half = bound * 1.02;
@@ -182,7 +199,11 @@ export class TorusSlicer {
     for (let z = 0; z <= GRID; z += 1) {
       for (let y = 0; y <= GRID; y += 1) {
         for (let x = 0; x <= GRID; x += 1) {
-          const f = this.field(pose, slice, -half + x * h, -half + y * h, -half + z * h);
+          this.q[0] = -half + x * h;
+          this.q[1] = -half + y * h;
+          this.q[2] = -half + z * h;
+          this.field(pose, slice);
+          const f = this.q[3]!;
           values[(z * side + y) * side + x] = f;
           if (f < 0) inside = true;
         }
@@ -220,17 +241,17 @@ export class TorusSlicer {
               }
             }
             // three crossings: a triangle; four: a quad (its edges in cyclic order are 0-1-3-2)
-            if (at > limit) return at / 3;
+            if (at > limit) return (at / 3) | 0;
             at = this.emit(positions, normals, at, pose, slice, 0, 1, 2);
             if (count === 4) {
-              if (at > limit) return at / 3;
+              if (at > limit) return (at / 3) | 0;
               at = this.emit(positions, normals, at, pose, slice, 1, 3, 2);
             }
           }
         }
       }
     }
-    return at / 3;
+    return (at / 3) | 0;
   }
 
   /** Writes triangle (a, b, c) of the crossing points, wound so that its normal points out. */
@@ -242,8 +263,11 @@ export class TorusSlicer {
     const g = this.g;
     for (let m = 0; m < 3; m += 1) {
       const q = m === 0 ? a : m === 1 ? b : c;
-      this.field(pose, slice, p[3 * q]!, p[3 * q + 1]!, p[3 * q + 2]!);
-      const len = Math.hypot(this.point[0]!, this.point[1]!, this.point[2]!) || 1;
+      this.q[0] = p[3 * q]!;
+      this.q[1] = p[3 * q + 1]!;
+      this.q[2] = p[3 * q + 2]!;
+      this.field(pose, slice);
+      const len = Math.sqrt(this.point[0]! * this.point[0]! + this.point[1]! * this.point[1]! + this.point[2]! * this.point[2]!) || 1;
       g[3 * q] = this.point[0]! / len;
       g[3 * q + 1] = this.point[1]! / len;
       g[3 * q + 2] = this.point[2]! / len;

@@ -19,7 +19,7 @@ import type { StepReport } from './types.js';
 /** Bytes of the Float64 header. */
 export const HEADER_BYTES = 64;
 const H_STEPS = 0;
-const H_TIME = 1;
+export const H_TIME = 1;
 const H_BODIES = 2;
 const H_COLLISIONS = 3;
 const H_BROKEN = 4;
@@ -74,6 +74,7 @@ export class ReportView implements StepReport {
   buffersCreated = 0;
   /** The buffer the views look at. */
   buffer: ArrayBuffer;
+  private header: Float64Array | null = null;
 
   constructor(D: Dims, buffer: ArrayBuffer) {
     this.stride = bodyStride(D);
@@ -89,8 +90,11 @@ export class ReportView implements StepReport {
 
   /** Points the views at `buffer`, reading the counts from its header. */
   attach(buffer: ArrayBuffer): this {
+    const same = buffer === this.buffer && this.header !== null;
     this.buffer = buffer;
-    const h = new Float64Array(buffer, 0, 8);
+    if (!same) this.header = new Float64Array(buffer, 0, 8);
+    const h = this.header!;
+    const layout = h[H_BODIES]! !== this.bodyCount || h[H_COLLISIONS]! !== this.collisionCount || h[H_BROKEN]! !== this.brokenCount || h[H_SLEPT]! !== this.sleptCount || h[H_WOKE]! !== this.wokeCount;
     this.steps = h[H_STEPS]!;
     this.time = h[H_TIME]!;
     this.bodyCount = h[H_BODIES]!;
@@ -99,6 +103,8 @@ export class ReportView implements StepReport {
     this.sleptCount = h[H_SLEPT]!;
     this.wokeCount = h[H_WOKE]!;
     this.buffersCreated = h[H_BUFFERS]!;
+    // the same buffer with the same counts (a main-thread world at rest): the views still fit
+    if (same && !layout) return this;
     let at = HEADER_BYTES;
     this.bodies = new Float32Array(buffer, at, this.bodyCount * this.stride);
     at += this.bodies.byteLength;
@@ -113,11 +119,32 @@ export class ReportView implements StepReport {
   }
 }
 
-/** Writes the header of a report. */
-export function writeHeader(buffer: ArrayBuffer, steps: number, time: number, c: ReportCounts, buffersCreated: number): void {
-  const h = new Float64Array(buffer, 0, 8);
+/** Views over a whole report buffer: the header, and the records and id lists after it. */
+export interface ReportViews {
+  readonly buffer: ArrayBuffer;
+  readonly header: Float64Array;
+  /** Float32 records from the end of the header to the end of the buffer. */
+  readonly floats: Float32Array;
+  /** The same bytes as Int32 (the id lists), indexed like `floats`. */
+  readonly ints: Int32Array;
+}
+
+/** Makes the views of a report buffer (once per buffer object). */
+export function reportViews(buffer: ArrayBuffer): ReportViews {
+  return {
+    buffer,
+    header: new Float64Array(buffer, 0, 8),
+    floats: new Float32Array(buffer, HEADER_BYTES),
+    ints: new Int32Array(buffer, HEADER_BYTES),
+  };
+}
+
+/**
+ * Writes the header of a report into its header view, but for the time (`h[H_TIME]`), which the
+ * caller writes itself: a double passed as an argument may be boxed.
+ */
+export function writeHeaderInto(h: Float64Array, steps: number, c: ReportCounts, buffersCreated: number): void {
   h[H_STEPS] = steps;
-  h[H_TIME] = time;
   h[H_BODIES] = c.bodies;
   h[H_COLLISIONS] = c.collisions;
   h[H_BROKEN] = c.broken;

@@ -12,7 +12,8 @@ import type { Dims, WorldOptions } from '@physin/engine';
 import { runCommand } from './commands.js';
 import type { CommandTarget } from './commands.js';
 import { buildBody, buildJoint, checkHostId } from './describe.js';
-import { bodyStride, collisionStride, HEADER_BYTES, reportBytes, writeHeader } from './report.js';
+import { bodyStride, collisionStride, H_TIME, reportBytes, reportViews, writeHeaderInto } from './report.js';
+import type { ReportViews } from './report.js';
 import type { ReportCounts } from './report.js';
 import type { BodyDescription, HostId, JointDescription } from './types.js';
 
@@ -177,9 +178,10 @@ export class WorldCore implements CommandTarget {
     const count = list.length;
     this.eventCount = 0;
     this.brokenCount = 0;
-    const dt = world.params.fixedTimeStep;
     for (let s = 0; s < steps; s += 1) {
-      world.step(dt);
+      // no argument: the step's default is params.fixedTimeStep, and a double read from an
+      // object and passed to a call is boxed (16 bytes a step)
+      world.step();
       this.gatherCollisions();
     }
     this.departed.clear();
@@ -192,16 +194,33 @@ export class WorldCore implements CommandTarget {
       if (now > before) slept += 1;
       else if (now < before) woke += 1;
     }
-    const counts: ReportCounts = { bodies: count, collisions: this.eventCount, broken: this.brokenCount, slept, woke };
+    // one counts object and one set of views per buffer, reused: writing a report allocates nothing
+    const counts = this.counts;
+    counts.bodies = count;
+    counts.collisions = this.eventCount;
+    counts.broken = this.brokenCount;
+    counts.slept = slept;
+    counts.woke = woke;
     const need = reportBytes(this.D, counts);
     let out = buffer;
     if (out === null || out.byteLength < need) {
       out = new ArrayBuffer(Math.max(need, out === null ? 0 : 2 * out.byteLength));
       this.buffersCreated += 1;
     }
-    writeHeader(out, steps, world.time, counts, this.buffersCreated);
-    this.writeRecords(out, counts);
+    const views = this.viewsOf(out);
+    writeHeaderInto(views.header, steps, counts, this.buffersCreated);
+    views.header[H_TIME] = world.time;
+    this.writeRecords(views, counts);
     return out;
+  }
+
+  private readonly counts: ReportCounts = { bodies: 0, collisions: 0, broken: 0, slept: 0, woke: 0 };
+  private views: ReportViews | null = null;
+
+  /** Views over the whole of `buffer`, made again only when the buffer is another object. */
+  private viewsOf(buffer: ArrayBuffer): ReportViews {
+    if (this.views === null || this.views.buffer !== buffer) this.views = reportViews(buffer);
+    return this.views;
   }
 
   private idOf(body: Body): number {
@@ -263,11 +282,11 @@ export class WorldCore implements CommandTarget {
     }
   }
 
-  private writeRecords(out: ArrayBuffer, c: ReportCounts): void {
+  private writeRecords(views: ReportViews, c: ReportCounts): void {
     const D = this.D;
     const { n, r, k } = D;
     const stride = bodyStride(D);
-    const f = new Float32Array(out, HEADER_BYTES, c.bodies * stride + c.collisions * collisionStride(D));
+    const f = views.floats;
     const list = this.world.bodies;
     const x = this.scratchX;
     const R = this.scratchR;
@@ -287,10 +306,12 @@ export class WorldCore implements CommandTarget {
     const base = c.bodies * stride;
     const len = c.collisions * collisionStride(D);
     for (let i = 0; i < len; i += 1) f[base + i] = this.events[i]!;
-    const ints = new Int32Array(out, HEADER_BYTES + 4 * (base + len), c.broken + c.slept + c.woke);
-    for (let i = 0; i < c.broken; i += 1) ints[i] = this.broken[i]!;
-    let s = c.broken;
-    let w = c.broken + c.slept;
+    // the id lists follow the records, in the same 4-byte index space
+    const ints = views.ints;
+    const first = base + len;
+    for (let i = 0; i < c.broken; i += 1) ints[first + i] = this.broken[i]!;
+    let s = first + c.broken;
+    let w = first + c.broken + c.slept;
     for (let i = 0; i < c.bodies; i += 1) {
       const body = list[i]!;
       const now = body.isSleeping ? 1 : 0;

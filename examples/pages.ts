@@ -17,6 +17,11 @@ export interface ExamplePage {
 /** Every page, in the order of the index. */
 export const pages: readonly ExamplePage[] = [
   {
+    dir: 'plugin',
+    title: 'The five steps',
+    summary: "Physijs's interface in PhysiN: a stack of boxes, a ball thrown at it, an octahedron read from its geometry.",
+  },
+  {
     dir: 'rotors',
     title: 'Rotors that stay rotations',
     summary: 'A tesseract in a 4D double rotation: why normalising a rotor is not enough, and what rotorCorrect does.',

@@ -15,8 +15,11 @@ const scope = globalThis as { WorkerGlobalScope?: unknown };
 if (scope.WorkerGlobalScope !== undefined) {
   expose(api);
 } else {
-  // Node: the module name is a variable so that bundlers leave it alone.
+  // Node: the module name is a variable so that bundlers leave it alone, and a promise rather
+  // than a top-level await, which bundlers that build workers as classic scripts (Vite's default
+  // format) refuse. Messages that arrive first wait on the port until `expose` listens.
   const name = 'node:worker_threads';
-  const threads = (await import(/* @vite-ignore */ /* webpackIgnore: true */ name)) as { parentPort: NodePort | null };
-  if (threads.parentPort !== null) expose(api, nodeEndpoint(threads.parentPort));
+  void (import(/* @vite-ignore */ /* webpackIgnore: true */ name) as Promise<{ parentPort: NodePort | null }>).then((threads) => {
+    if (threads.parentPort !== null) expose(api, nodeEndpoint(threads.parentPort));
+  });
 }

@@ -1,0 +1,196 @@
+/**
+ * Every page of the examples site in a real browser: Debian's Chromium driven by playwright-core
+ * (no browser download), WebGL2 on SwiftShader. The site is built with Vite and served from
+ * examples/dist by a small static server on the loopback.
+ *
+ * For each page: no console error, no failed request; the canvas is not blank (pixel variance);
+ * for the physics pages (those that set `globalThis.physinDemo`) the world advances (positions
+ * change between two reads) and, with `?worker=1`, the positions after the same number of fixed
+ * steps are bit-identical to the main thread's. A screenshot of each page is saved in
+ * test-artifacts/browser/.
+ *
+ * Without Chromium the file says so in one loud line and its tests do not run; under CI (CI=true)
+ * a missing browser is a failure.
+ */
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdirSync, readFileSync, statSync } from 'node:fs';
+import { createServer } from 'node:http';
+import type { AddressInfo, Server } from 'node:net';
+import { dirname, extname, join, normalize } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+import type { Browser, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { pages } from '../examples/pages.js';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const site = join(root, 'examples/dist');
+const artifacts = join(root, 'test-artifacts/browser');
+const CHROMIUM = process.env.PHYSIN_CHROMIUM ?? '/usr/bin/chromium';
+const present = existsSync(CHROMIUM);
+/** Frames each physics page runs before it is compared across threads. */
+const FRAMES = 60;
+
+if (!present) {
+  const line = `!!! BROWSER TESTS NOT RUN: no Chromium at ${CHROMIUM} (apt-get install -y chromium, or set PHYSIN_CHROMIUM) !!!`;
+  if (process.env.CI === 'true') throw new Error(`${line} — under CI a missing browser is a failure`);
+  console.warn(`\n${line}\n`);
+}
+
+const TYPES: Record<string, string> = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+  '.json': 'application/json',
+};
+
+/** Serves examples/dist on the loopback. */
+function serve(): Promise<Server> {
+  const server = createServer((request, response) => {
+    const path = decodeURIComponent(new URL(request.url ?? '/', 'http://localhost').pathname);
+    let file = normalize(join(site, path));
+    if (!file.startsWith(site)) {
+      response.writeHead(403).end();
+      return;
+    }
+    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
+    if (!existsSync(file)) {
+      response.writeHead(404).end();
+      return;
+    }
+    response.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    response.end(readFileSync(file));
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
+}
+
+let browser: Browser;
+let server: Server;
+let base = '';
+
+/** Opens `url` and collects every console error, page error and failed request. */
+async function open(url: string): Promise<{ page: Page; problems: string[] }> {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const problems: string[] = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error') problems.push(`console.error: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
+  page.on('response', (r) => {
+    if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`);
+  });
+  await page.goto(url);
+  return { page, problems };
+}
+
+/**
+ * Variance of the luminance of the first canvas as the screen shows it (a screenshot, decoded by
+ * the browser itself), sampled at 64 × 64: a blank canvas gives 0.
+ */
+async function canvasVariance(page: Page): Promise<number> {
+  const png = (await page.locator('canvas').first().screenshot()).toString('base64');
+  return page.evaluate(async (data) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${data}`;
+    await image.decode();
+    const small = document.createElement('canvas');
+    small.width = 64;
+    small.height = 64;
+    const ctx = small.getContext('2d')!;
+    ctx.drawImage(image, 0, 0, 64, 64);
+    const pixels = ctx.getImageData(0, 0, 64, 64).data;
+    let sum = 0;
+    let sum2 = 0;
+    for (let i = 0; i < pixels.length; i += 4) {
+      const y = 0.2126 * pixels[i]! + 0.7152 * pixels[i + 1]! + 0.0722 * pixels[i + 2]!;
+      sum += y;
+      sum2 += y * y;
+    }
+    const count = pixels.length / 4;
+    return sum2 / count - (sum / count) ** 2;
+  }, png);
+}
+
+/** Every PhysiN mesh's n-D position and rotor, in the scene's order. */
+function poses(page: Page): Promise<number[][]> {
+  return page.evaluate(() => {
+    const demo = (globalThis as { physinDemo?: { scene: { children: unknown[] } } }).physinDemo!;
+    const out: number[][] = [];
+    for (const child of demo.scene.children as { isPhysinMesh?: boolean; getPositionN(): Float64Array; getRotor(): Float64Array }[]) {
+      if (child.isPhysinMesh) out.push([...child.getPositionN(), ...child.getRotor()]);
+    }
+    return out;
+  });
+}
+
+function hasDemo(page: Page): Promise<boolean> {
+  return page.evaluate(() => (globalThis as { physinDemo?: unknown }).physinDemo !== undefined);
+}
+
+async function waitFrames(page: Page, frames: number): Promise<void> {
+  await page.waitForFunction((n) => ((globalThis as { physinDemo?: { frame: number } }).physinDemo?.frame ?? 0) >= n, frames, { timeout: 120_000, polling: 50 });
+}
+
+describe.runIf(present)('the examples site in Chromium', () => {
+  beforeAll(async () => {
+    execFileSync(process.execPath, [join(root, 'examples/node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], { cwd: join(root, 'examples'), stdio: 'inherit' });
+    mkdirSync(artifacts, { recursive: true });
+    server = await serve();
+    base = `http://127.0.0.1:${(server.address() as AddressInfo).port}`;
+    browser = await chromium.launch({
+      executablePath: CHROMIUM,
+      args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--no-sandbox'],
+    });
+  }, 300_000);
+
+  afterAll(async () => {
+    await browser?.close();
+    await new Promise((resolve) => (server ? server.close(resolve) : resolve(undefined)));
+  });
+
+  it('the index lists every page, with no error', async () => {
+    const { page, problems } = await open(`${base}/`);
+    await page.waitForSelector('.card');
+    expect(await page.locator('.card').count()).toBe(pages.length);
+    await page.screenshot({ path: join(artifacts, 'index.png') });
+    expect(problems).toEqual([]);
+    await page.close();
+  }, 60_000);
+
+  for (const entry of pages) {
+    it(`${entry.dir}: loads cleanly, draws, and (physics pages) advances and matches the worker`, async () => {
+      const { page, problems } = await open(`${base}/${entry.dir}/?frames=${FRAMES}`);
+      await page.waitForSelector('canvas');
+      await page.waitForTimeout(500);
+      const physics = await hasDemo(page);
+      if (physics) {
+        await waitFrames(page, 5);
+        const early = await poses(page);
+        await waitFrames(page, FRAMES);
+        await page.waitForTimeout(300);
+        const main = await poses(page);
+        expect(main.length).toBeGreaterThan(0);
+        expect(main).not.toEqual(early);
+        await page.screenshot({ path: join(artifacts, `${entry.dir}.png`) });
+        expect(await canvasVariance(page)).toBeGreaterThan(20);
+        const worker = await open(`${base}/${entry.dir}/?worker=1&frames=${FRAMES}`);
+        await waitFrames(worker.page, FRAMES);
+        await worker.page.waitForTimeout(300);
+        expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe('worker');
+        expect(await poses(worker.page)).toEqual(main);
+        await worker.page.screenshot({ path: join(artifacts, `${entry.dir}-worker.png`) });
+        expect(worker.problems).toEqual([]);
+        await worker.page.close();
+      } else {
+        await page.waitForTimeout(2000);
+        await page.screenshot({ path: join(artifacts, `${entry.dir}.png`) });
+        expect(await canvasVariance(page)).toBeGreaterThan(20);
+      }
+      expect(problems).toEqual([]);
+      await page.close();
+    }, 240_000);
+  }
+});

@@ -61,7 +61,9 @@ export abstract class HyperShapeMesh extends Mesh {
     return this.geometry.getAttribute('normal').array as Float32Array;
   }
 
+  /** Shows `count` vertices; a body that stays out of the slice is left as it is (no upload). */
   protected show(count: number): void {
+    if (count === 0 && !this.visible && this.geometry.drawRange.count === 0) return;
     this.visible = count > 0;
     commit(this.geometry, count);
   }

@@ -142,7 +142,7 @@ export class TorusSlicer {
 
   /**
    * f at the flat's point (x0 + px, x1 + py, x2 + pz, slice…), (px, py, pz) read from `q[0..2]`:
-   * the torus's distance function (ρ − R)² + Σ others − r², in body coordinates. Writes f to
+   * the distance to the major circle minus r, √((ρ − R)² + Σ others) − r, in body coordinates. Writes f to
    * `q[3]` and ∂f/∂(px, py, pz) to `point` (through scratch, as a double argument or result of a
    * call that is not inlined is boxed).
    */
@@ -162,7 +162,7 @@ export class TorusSlicer {
     const i = pose.planeI, j = pose.planeJ;
     const rho = Math.sqrt(local[i]! * local[i]! + local[j]! * local[j]!);
     const R = pose.majorRadius;
-    let f = (rho - R) * (rho - R) - pose.minorRadius * pose.minorRadius;
+    let f = (rho - R) * (rho - R);
     const grad = this.grad;
     for (let c = 0; c < n; c += 1) {
       if (c === i || c === j) continue;
@@ -179,7 +179,9 @@ export class TorusSlicer {
       for (let c = 0; c < n; c += 1) s += M[row * n + c]! * grad[c]!;
       point[row] = s;
     }
-    this.q[3] = f;
+    // the distance minus r, not its square minus r²: linear near the surface, so the crossings the
+    // grid interpolates fall on it rather than inside (a thin torus lost up to 10 % of its volume)
+    this.q[3] = Math.sqrt(f) - pose.minorRadius;
   }
 
   /** Marching tetrahedra over a grid that holds the torus's bound. */

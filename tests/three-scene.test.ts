@@ -8,14 +8,19 @@ import { describe, expect, it } from 'vitest';
 import * as THREE from 'three';
 import {
   BoxMesh,
+  ConvexMesh,
+  DistanceJoint,
   HingeJoint,
   HyperBoxMesh,
+  HyperMesh,
+  HyperTorusMesh,
   HyperPlaneMesh,
   HyperSphereMesh,
   PlaneMesh,
   PointJoint,
   Scene,
   SphereMesh,
+  TorusMesh,
   createMaterial,
 } from '@physin/three';
 import type { CollisionEvent } from '@physin/three';
@@ -280,6 +285,40 @@ describe('bad input: a clear error, nothing changed', () => {
     expect(scene.children).toHaveLength(1);
     await run(scene, 5, 1 / 60, 1);
     expect(box.position.toArray()).toEqual([0, 0, 0]);
+    scene.dispose();
+  });
+
+  it('joints, materials and n-D meshes refuse bad arguments; a bad command kept before add fails the add and leaves nothing', async () => {
+    const scene = new Scene({ dimensions: 3, gravity: [0, 0, 0] });
+    const a = new BoxMesh(new THREE.BoxGeometry(1, 1, 1), material, 1);
+    const b = new BoxMesh(new THREE.BoxGeometry(1, 1, 1), material, 1);
+    b.setPositionN([2, 0, 0]);
+    scene.add(a, b);
+    const hinge = scene.addConstraint(new HingeJoint(a, b, [1, 0, 0], [-1, 0, 0], { plane: 0 }));
+    expect(() => hinge.setSoftness(-1, 1)).toThrow(/hertz/);
+    expect(() => hinge.setBreak(Number.NaN, 0)).toThrow(/force/);
+    expect(() => hinge.setLimits(0, Infinity)).toThrow(/upper/);
+    expect(() => hinge.setMotor(1, -2)).toThrow(/maxTorque/);
+    expect(() => hinge.setAnchors([0, 0], null)).toThrow(/localA/);
+    expect(() => new PointJoint({} as never, null)).toThrow(TypeError);
+    expect(() => new DistanceJoint(a, b).setMode('spring' as never)).toThrow(/'rod', 'rope' or 'strut'/);
+    expect(() => scene.addConstraint(new HingeJoint(a, b, [0, 0, 0], [0, 0, 0], { plane: 7 }))).toThrow(RangeError);
+    expect(scene.jointCount).toBe(1);
+    expect(() => createMaterial({} as never, 0.5)).toThrow(/THREE.Material/);
+    expect(() => createMaterial(new THREE.MeshBasicMaterial(), 0.5, 2)).toThrow(/restitution/);
+    expect(() => new HyperTorusMesh(1, 0.2, [0, 0])).toThrow(/two different axes/);
+    expect(() => new HyperTorusMesh(1, 0.2, [0, 1], material, 1, { dimensions: 9 })).toThrow(/dimensions/);
+    expect(() => new HyperMesh([[0, 0, 0, 0]], [[0, 1, 2, 3]])).toThrow(/vertices/);
+    expect(() => new TorusMesh(new THREE.TorusGeometry(1, 0.2), material, 1, 1, -0.2)).toThrow(/minorRadius/);
+    expect(() => new ConvexMesh(new THREE.BufferGeometry(), material, 1)).toThrow(/position/);
+    const late = new BoxMesh(new THREE.BoxGeometry(1, 1, 1), material, 1);
+    late.setLinearVelocity([1, 2]);
+    expect(() => scene.add(late)).toThrow(/Body.setLinearVelocity: argument 'v'/);
+    expect(scene.bodyCount).toBe(2);
+    expect(late._physiN.id).toBe(null);
+    expect(scene.children).toHaveLength(2);
+    await run(scene, 3, 1 / 60, 1);
+    expect(a.position.toArray()).toEqual([0, 0, 0]);
     scene.dispose();
   });
 });

@@ -5,8 +5,12 @@
  * @physin/* resolve through their package `exports` to the built dist/ files, as for any user of
  * the library (`npm start` builds them first).
  */
+import { copyFileSync, mkdirSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vite';
+import type { Plugin } from 'vite';
 import { pages } from './pages.js';
 
 const here = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
@@ -14,7 +18,23 @@ const here = (path: string): string => fileURLToPath(new URL(path, import.meta.u
 const input: Record<string, string> = { index: here('./index.html') };
 for (const page of pages) input[page.dir] = here(`./${page.dir}/index.html`);
 
+/**
+ * Copies the classic scripts of @physin/three (dist/classic: three.js, physin.js,
+ * physin_worker.js) next to public/classic/plugin.html, so the page works served and from disk.
+ */
+function classicScripts(): Plugin {
+  const copy = (): void => {
+    const require = createRequire(import.meta.url);
+    const from = join(dirname(require.resolve('@physin/three/package.json')), 'dist/classic');
+    const to = here('./public/classic');
+    mkdirSync(to, { recursive: true });
+    for (const file of ['three.js', 'physin.js', 'physin_worker.js']) copyFileSync(join(from, file), join(to, file));
+  };
+  return { name: 'physin-classic-scripts', buildStart: copy, configureServer: copy };
+}
+
 export default defineConfig({
+  plugins: [classicScripts()],
   root: here('.'),
   base: './',
   build: {

@@ -193,4 +193,32 @@ describe.runIf(present)('the examples site in Chromium', () => {
       await page.close();
     }, 240_000);
   }
+
+  it('classic build: plugin.html opened from file:// runs, in the main thread and in a Blob-URL worker, alike', async () => {
+    const file = `file://${join(site, 'classic/plugin.html')}`;
+    const main = await open(`${file}?frames=${FRAMES}`);
+    await waitFrames(main.page, 5);
+    const early = await poses(main.page);
+    await waitFrames(main.page, FRAMES);
+    await main.page.waitForTimeout(300);
+    const last = await poses(main.page);
+    expect(last).toHaveLength(7);
+    expect(last).not.toEqual(early);
+    expect(await canvasVariance(main.page)).toBeGreaterThan(20);
+    await main.page.screenshot({ path: join(artifacts, 'classic-file.png') });
+    const worker = await open(`${file}?worker=1&frames=${FRAMES}`);
+    await waitFrames(worker.page, FRAMES);
+    await worker.page.waitForTimeout(300);
+    expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe('worker');
+    expect(await poses(worker.page)).toEqual(last);
+    // over HTTP, PhysiN.scripts.worker = 'physin_worker.js' loads the file as the specification says
+    const served = await open(`${base}/classic/plugin.html?worker=1&frames=${FRAMES}`);
+    await waitFrames(served.page, FRAMES);
+    await served.page.waitForTimeout(300);
+    expect(await poses(served.page)).toEqual(last);
+    for (const run of [main, worker, served]) {
+      expect(run.problems).toEqual([]);
+      await run.page.close();
+    }
+  }, 240_000);
 });

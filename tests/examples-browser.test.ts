@@ -13,15 +13,15 @@
  * a missing browser is a failure.
  */
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, statSync } from 'node:fs';
-import { createServer } from 'node:http';
-import type { AddressInfo, Server } from 'node:net';
-import { dirname, extname, join, normalize } from 'node:path';
+import { existsSync, mkdirSync } from 'node:fs';
+import type { Server } from 'node:http';
+import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 import type { Browser, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { pages } from '../examples/pages.js';
+import { serveStatic } from '../scripts/lib/static-server.mjs';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
 const site = join(root, 'examples/dist');
@@ -35,35 +35,6 @@ if (!present) {
   const line = `!!! BROWSER TESTS NOT RUN: no Chromium at ${CHROMIUM} (apt-get install -y chromium, or set PHYSIN_CHROMIUM) !!!`;
   if (process.env.CI === 'true') throw new Error(`${line} — under CI a missing browser is a failure`);
   console.warn(`\n${line}\n`);
-}
-
-const TYPES: Record<string, string> = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.png': 'image/png',
-  '.svg': 'image/svg+xml',
-  '.json': 'application/json',
-};
-
-/** Serves examples/dist on the loopback. */
-function serve(): Promise<Server> {
-  const server = createServer((request, response) => {
-    const path = decodeURIComponent(new URL(request.url ?? '/', 'http://localhost').pathname);
-    let file = normalize(join(site, path));
-    if (!file.startsWith(site)) {
-      response.writeHead(403).end();
-      return;
-    }
-    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
-    if (!existsSync(file)) {
-      response.writeHead(404).end();
-      return;
-    }
-    response.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
-    response.end(readFileSync(file));
-  });
-  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
 }
 
 let browser: Browser;
@@ -138,8 +109,7 @@ describe.runIf(present)('the examples site in Chromium', () => {
   beforeAll(async () => {
     execFileSync(process.execPath, [join(root, 'examples/node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], { cwd: join(root, 'examples'), stdio: 'inherit' });
     mkdirSync(artifacts, { recursive: true });
-    server = await serve();
-    base = `http://127.0.0.1:${(server.address() as AddressInfo).port}`;
+    ({ server, base } = await serveStatic(site));
     browser = await chromium.launch({
       executablePath: CHROMIUM,
       args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--no-sandbox'],

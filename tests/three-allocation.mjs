@@ -10,8 +10,7 @@
 //
 // The step itself is not measured here (see engine-allocation); nor are collision events, which
 // are one new object per event by design.
-import { PerformanceObserver } from 'node:perf_hooks';
-import v8 from 'node:v8';
+import { leastGrowth } from './support/young-generation.mjs';
 import * as THREE from 'three';
 
 if (typeof globalThis.gc !== 'function') {
@@ -69,37 +68,13 @@ async function build() {
   return { scene, reports: copies };
 }
 
-/** Bytes used in the young generation, where short-lived objects go (the JIT's code does not). */
-function newSpace() {
-  return v8.getHeapSpaceStatistics().find((s) => s.space_name === 'new_space').space_used_size;
-}
-
-/** The least growth of the heap over three windows of `count` frames with no collection inside. */
-function window(work, count) {
-  let gcs = 0;
-  const observer = new PerformanceObserver((list) => (gcs += list.getEntries().length));
-  observer.observe({ entryTypes: ['gc'] });
-  let least = Infinity;
-  for (let w = 0; w < 3; w += 1) {
-    globalThis.gc();
-    globalThis.gc();
-    gcs = 0;
-    const before = newSpace();
-    work(count);
-    const after = newSpace();
-    if (gcs === 0) least = Math.min(least, after - before);
-  }
-  observer.disconnect();
-  return least;
-}
-
 /**
  * Bytes a frame, as the slope between windows of `frames / 5` and `frames` frames: the window's
  * fixed cost (the measuring, the JIT) cancels, an allocation per frame does not.
  */
 function measure(label, work) {
-  const short = window(work, frames / 5);
-  const long = window(work, frames);
+  const short = leastGrowth(work, frames / 5);
+  const long = leastGrowth(work, frames);
   return { label, perFrame: (long - short) / (frames - frames / 5), short, long };
 }
 

@@ -11,10 +11,9 @@
 // is transferred, so each side sees a new ArrayBuffer object and makes new views over it (a few
 // small objects a step, never the report's bytes); the promise `host.step` returns is the
 // caller's interface and is not counted here either.
-import { PerformanceObserver } from 'node:perf_hooks';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
-import v8 from 'node:v8';
+import { leastGrowth } from './support/young-generation.mjs';
 
 if (typeof globalThis.gc !== 'function') {
   console.error('worker-allocation.mjs: run node with --expose-gc');
@@ -42,28 +41,6 @@ function build(n) {
   return core;
 }
 
-function newSpace() {
-  return v8.getHeapSpaceStatistics().find((s) => s.space_name === 'new_space').space_used_size;
-}
-
-function window(work, count) {
-  let gcs = 0;
-  const observer = new PerformanceObserver((list) => (gcs += list.getEntries().length));
-  observer.observe({ entryTypes: ['gc'] });
-  let least = Infinity;
-  for (let w = 0; w < 3; w += 1) {
-    globalThis.gc();
-    globalThis.gc();
-    gcs = 0;
-    const before = newSpace();
-    work(count);
-    const after = newSpace();
-    if (gcs === 0) least = Math.min(least, after - before);
-  }
-  observer.disconnect();
-  return least;
-}
-
 const results = {};
 for (const n of [3, 4]) {
   const core = build(n);
@@ -81,8 +58,8 @@ for (const n of [3, 4]) {
     run(steps / 5);
     await new Promise((resolve) => setTimeout(resolve, 50));
   }
-  const short = window(run, steps / 5);
-  const long = window(run, steps);
+  const short = leastGrowth(run, steps / 5);
+  const long = leastGrowth(run, steps);
   results[n] = { short, long, perStep: (long - short) / (steps - steps / 5), bodies: view.bodyCount, buffersCreated: view.buffersCreated, collisions: view.collisionCount };
 }
 console.log(JSON.stringify({ steps, results }));

@@ -7,10 +7,9 @@
  */
 import * as THREE from 'three';
 import { dims } from '@physin/algebra';
-import type { BodyDescription, ShapeDescription } from '@physin/worker';
+import type { ShapeDescription } from '@physin/worker';
 import { finite, integer, numbers, positive } from './checks.js';
 import { Mesh } from './mesh.js';
-import { identityRotor } from './meshes.js';
 import { BoxSlicer } from './slice/box-slice.js';
 import { flatDistanceSquared } from './slice/sphere-slice.js';
 import { TetraSlicer } from './slice/tetra-slice.js';
@@ -165,6 +164,7 @@ export class HyperPlaneMesh extends HyperShapeMesh {
     super(displayGeometry ?? new THREE.PlaneGeometry(40, 40).rotateX(-Math.PI / 2), material, 0, N.length);
     this.normal = N;
     this.offset = offset;
+    this.placedByShape = true;
     this.ownsGeometry = displayGeometry === undefined;
   }
 
@@ -173,16 +173,6 @@ export class HyperPlaneMesh extends HyperShapeMesh {
     return { kind: 'halfspace', normal: this.normal, offset: this.offset };
   }
 
-  /** @internal */
-  override describeBody(n: number): BodyDescription {
-    return { ...super.describeBody(n), position: new Float64Array(n), rotor: identityRotor(n) };
-  }
-
-  /** @internal */
-  override sendMoves(): void {}
-
-  /** @internal */
-  override readRecord(): void {}
 
   /** @internal Visible while the boundary meets the flat: always, unless the normal is all in w. */
   updateSlice(slice: Float64Array): void {

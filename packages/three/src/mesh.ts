@@ -85,6 +85,11 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
   readonly _lastQuaternion = new THREE.Quaternion();
   /** @internal Commands called before `add`, in order. */
   readonly _pending: PendingCommand[] = [];
+  /**
+   * True for a half-space: its body is placed by its normal and offset, not by the mesh, so the
+   * mesh's position neither moves the body nor follows it.
+   */
+  protected placedByShape = false;
   private readonly physics: { id: HostId | null; dimensions: number | null; mass: number };
   private readonly scratchQ = [0, 0, 0, 1];
 
@@ -141,11 +146,18 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     this.readPoseFromObject();
     const mass = this.physics.mass;
     const material = materialOf(this.material);
+    let position = this._x!;
+    let rotor = this._R!;
+    if (this.placedByShape) {
+      position = new Float64Array(n);
+      rotor = new Float64Array(rotor.length);
+      rotor[0] = 1;
+    }
     return {
       shape: this.describeShape(n),
       ...(mass > 0 ? { mass, type: 'dynamic' as const } : { type: 'static' as const }),
-      position: this._x!,
-      rotor: this._R!,
+      position,
+      rotor,
       ...(material === null ? {} : { material }),
     };
   }
@@ -334,7 +346,7 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   /** @internal The move the user made since the adapter last wrote the pose: teleport the body. */
   sendMoves(): void {
-    if (this._link === null || this.physics.id === null || this._x === null) return;
+    if (this.placedByShape || this._link === null || this.physics.id === null || this._x === null) return;
     const n = this._x.length;
     const host = this._link.host;
     const id = this.physics.id;
@@ -358,6 +370,7 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   /** @internal Reads one body record of a report: `id | x (n) | R (r) | v (n) | L (k)`. */
   readRecord(bodies: Float32Array, at: number, n: number, r: number): void {
+    if (this.placedByShape) return;
     const x = this._x!;
     const R = this._R!;
     const v = this._v!;

@@ -5,7 +5,7 @@
  * @module
  */
 import * as THREE from 'three';
-import type { BodyDescription, ShapeDescription } from '@physin/worker';
+import type { ShapeDescription } from '@physin/worker';
 import { finite, integer, numbers, positive } from './checks.js';
 import { Mesh } from './mesh.js';
 
@@ -94,6 +94,7 @@ export class PlaneMesh extends Mesh {
     super(geometryOf(where, geometry), material, 0, N.length);
     this.normal = N;
     this.offset = offset;
+    this.placedByShape = true;
   }
 
   /** @internal */
@@ -101,16 +102,6 @@ export class PlaneMesh extends Mesh {
     return { kind: 'halfspace', normal: this.normal, offset: this.offset };
   }
 
-  /** @internal The half-space is placed by its normal and offset, not by the mesh. */
-  override describeBody(n: number): BodyDescription {
-    return { ...super.describeBody(n), position: new Float64Array(n), rotor: identityRotor(n) };
-  }
-
-  /** @internal */
-  override sendMoves(): void {}
-
-  /** @internal */
-  override readRecord(): void {}
 }
 
 /**
@@ -177,11 +168,4 @@ export class ConvexMesh extends Mesh {
     const index = this.geometry.getIndex();
     return index === null ? { kind: 'triangles', positions } : { kind: 'triangles', positions, indices: Array.from(index.array) };
   }
-}
-
-/** The identity rotor of n dimensions. */
-export function identityRotor(n: number): Float64Array {
-  const R = new Float64Array(2 ** (n - 1));
-  R[0] = 1;
-  return R;
 }

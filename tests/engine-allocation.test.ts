@@ -11,8 +11,9 @@
  * counts the garbage collections that started in that window: with none, the young generation
  * was never emptied, so the difference of the two readings is all that was allocated — by the
  * step and by the measuring itself (about 12 KB of new space). Three windows are measured per n.
- * Every window must show no collection and < 64 KB of new-space growth (the step's own
- * allocations would be young and would repeat in every window); the whole-heap growth must be
+ * At least two windows must show no collection, the quietest of them < 64 KB of new-space growth
+ * (the step's own allocations would be young and would repeat in every window, while a late
+ * compile on a loaded machine once left 190 KB in one window); the whole-heap growth must be
  * < 64 KB in the smallest window: besides, the JIT sometimes leaves 10-220 KB in old space during
  * a window, independent of the number of steps (measured with 2 000 and 40 000 steps alike).
  * Budget: 64 KB for the 10 000 steps, i.e. far less than one heap number (16 B) per step.
@@ -61,6 +62,18 @@ interface Measure {
 
 let results: Record<string, Measure> = {};
 
+/**
+ * The step's own allocation would repeat in every window; a late compile on a loaded machine (CI
+ * runs test files side by side) can leave garbage in one. So: at least two windows without a
+ * collection, and the quietest of them under 64 KB of new space (the measuring itself is about
+ * 12 KB; one heap number a step would be 160 KB).
+ */
+function expectQuietWindows(windows: readonly { collections: number; newSpace: number }[]): void {
+  const quiet = windows.filter((w) => w.collections === 0);
+  expect(quiet.length).toBeGreaterThanOrEqual(2);
+  expect(Math.min(...quiet.map((w) => w.newSpace))).toBeLessThan(64 * 1024);
+}
+
 /** The scenes of tests/engine-allocation.mjs, each measured in a child process of its own. */
 const SCENES = ['3', '4', 'stack3', 'stack4', 'joints3', 'joints4'];
 
@@ -83,11 +96,7 @@ describe('World.step allocates nothing in steady state (built engine, child proc
       expect(r.bodies).toBe(100);
       expect(r.steps).toBe(10_000);
       expect(r.windows.length).toBeGreaterThanOrEqual(2);
-      for (const w of r.windows) {
-        expect(w.collections).toBe(0);
-        // What running code allocated (all of it young): the measuring itself is about 12 KB.
-        expect(w.newSpace).toBeLessThan(64 * 1024);
-      }
+      expectQuietWindows(r.windows);
       // Whole heap: the smallest window (the JIT's old-space leftovers do not repeat; see the script).
       expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
     });
@@ -98,10 +107,7 @@ describe('World.step allocates nothing in steady state (built engine, child proc
       expect(r.bodies).toBe(15);
       // 9 stacked pairs (8 box–box + the ground), 4 balls and the torus on the ground.
       expect(r.touching).toBe(14);
-      for (const w of r.windows) {
-        expect(w.collections).toBe(0);
-        expect(w.newSpace).toBeLessThan(64 * 1024);
-      }
+      expectQuietWindows(r.windows);
       expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
     });
   }
@@ -109,10 +115,7 @@ describe('World.step allocates nothing in steady state (built engine, child proc
     it(`n = ${n}: 10 000 steps of a joint scene (a whipping chain, a closed loop, a weld, a motorised hinge with limits, a soft rope, a subspace pin, a box on a half-space; sleep off): the same bounds`, () => {
       const r = results[`joints${n}`]!;
       expect(r.joints).toBe(17);
-      for (const w of r.windows) {
-        expect(w.collections).toBe(0);
-        expect(w.newSpace).toBeLessThan(64 * 1024);
-      }
+      expectQuietWindows(r.windows);
       expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
     });
   }

@@ -109,6 +109,8 @@ let nextBodyId = 1;
 /** Per-dimension scratch of the body methods (set-up calls, never the step). */
 interface BodyScratch {
   readonly bivector: Float64Array;
+  /** k numbers, the ω an impulse would give, checked before it is kept. */
+  readonly omega: Float64Array;
   readonly tmp: Float64Array;
   readonly vector: Float64Array;
   /** r numbers, for setRotor / getRotor. */
@@ -120,6 +122,7 @@ const scratchByN: (BodyScratch | undefined)[] = [];
 function scratchFor(D: Dims): BodyScratch {
   return (scratchByN[D.n] ??= {
     bivector: new Float64Array(D.k),
+    omega: new Float64Array(D.k),
     tmp: new Float64Array(D.k),
     vector: new Float64Array(D.n),
     rotor: new Float64Array(D.r),
@@ -161,13 +164,29 @@ function isZero(a: ArrayLike<number>): boolean {
 }
 
 /** out += a ∧ b: (a∧b)_ij = a_i b_j − a_j b_i. */
-function addWedge(D: Dims, out: Float64Array, a: ArrayLike<number>, b: ArrayLike<number>): void {
+/**
+ * Throws a RangeError naming `name` unless base + scale·add stays finite in every component (a
+ * call must never put a non-finite number into a body: two impulses of 1e308 would).
+ */
+function checkSumFinite(fn: string, name: string, label: string, field: string, base: Float64Array, add: ArrayLike<number>, scale: number): void {
+  for (let i = 0; i < base.length; i += 1) {
+    if (!Number.isFinite(base[i]! + add[i]! * scale)) {
+      throw new RangeError(`${fn}: argument '${name}' would make ${label}'s ${field} non-finite (component ${i}); nothing was changed`);
+    }
+  }
+}
+
+/** out = base + a ∧ b into `out` (k numbers), then true if every component is finite. */
+function wedgeSumFinite(D: Dims, out: Float64Array, base: Float64Array, a: ArrayLike<number>, b: ArrayLike<number>): boolean {
   const { k, planeI, planeJ } = D;
+  let finite = true;
   for (let p = 0; p < k; p += 1) {
     const i = planeI[p]!;
     const j = planeJ[p]!;
-    out[p] = out[p]! + (a[i]! * b[j]! - a[j]! * b[i]!);
+    out[p] = base[p]! + (a[i]! * b[j]! - a[j]! * b[i]!);
+    if (!Number.isFinite(out[p]!)) finite = false;
   }
+  return finite;
 }
 
 /**
@@ -690,6 +709,7 @@ export class Body {
     checkVector(this.D, 'j', j, 'Body.applyCentralImpulse');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
+    checkSumFinite('Body.applyCentralImpulse', 'j', this.label, 'velocity', this.vView, j, im);
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
     this.wake();
     return this;
@@ -706,9 +726,20 @@ export class Body {
     checkVector(this.D, 'r', r, fn);
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
+    checkSumFinite(fn, 'j', this.label, 'velocity', this.vView, j, im);
+    // the new L and its ω first, into scratch: committed only if both are finite
+    const scratch = scratchFor(this.D);
+    const L = scratch.bivector;
+    const w = scratch.omega;
+    let finite = wedgeSumFinite(this.D, L, this.lView, r, j);
+    if (finite) {
+      angularVelocityFromMomentum(this.D, w, this.rView, this.invInertia, L, scratch.tmp);
+      for (let p = 0; p < this.D.k; p += 1) if (!Number.isFinite(w[p]!)) finite = false;
+    }
+    if (!finite) throw new RangeError(`${fn}: arguments 'j' and 'r' would make ${this.label}'s angular momentum non-finite; nothing was changed`);
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
-    addWedge(this.D, this.lView, r, j);
-    this.omegaFromMomentum();
+    this.lView.set(L);
+    this.wView.set(w);
     this.wake();
     return this;
   }
@@ -717,6 +748,7 @@ export class Body {
   applyCentralForce(f: ArrayLike<number>): this {
     checkVector(this.D, 'f', f, 'Body.applyCentralForce');
     if (this.motion !== MOTION_DYNAMIC) return this;
+    checkSumFinite('Body.applyCentralForce', 'f', this.label, 'force', this.fView, f, 1);
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
     this.wake();
     return this;
@@ -731,8 +763,13 @@ export class Body {
     checkVector(this.D, 'f', f, fn);
     checkVector(this.D, 'r', r, fn);
     if (this.motion !== MOTION_DYNAMIC) return this;
+    checkSumFinite(fn, 'f', this.label, 'force', this.fView, f, 1);
+    const torque = scratchFor(this.D).bivector;
+    if (!wedgeSumFinite(this.D, torque, this.tView, r, f)) {
+      throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
+    }
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
-    addWedge(this.D, this.tView, r, f);
+    this.tView.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -742,6 +779,7 @@ export class Body {
   applyTorque(t: ArrayLike<number>): this {
     checkBivector(this.D, 't', t, 'Body.applyTorque');
     if (this.motion !== MOTION_DYNAMIC) return this;
+    checkSumFinite('Body.applyTorque', 't', this.label, 'torque', this.tView, t, 1);
     for (let p = 0; p < this.D.k; p += 1) this.tView[p] = this.tView[p]! + t[p]!;
     this.hasTorque = true;
     this.wake();

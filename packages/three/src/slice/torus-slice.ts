@@ -14,6 +14,24 @@
 /** Segments of the exact path round the major circle and round the tube. */
 const MAJOR_SEGMENTS = 48;
 const MINOR_SEGMENTS = 16;
+/** cos and sin of the grid angles (index = segment, the last equal to the first), made by the first slicer. */
+interface RingTables {
+  readonly cosMajor: Float64Array;
+  readonly sinMajor: Float64Array;
+  readonly cosMinor: Float64Array;
+  readonly sinMinor: Float64Array;
+}
+let ringTables: RingTables | null = null;
+function tables(): RingTables {
+  const angles = (count: number, f: (x: number) => number): Float64Array =>
+    Float64Array.from({ length: count + 1 }, (_, i) => f((2 * Math.PI * i) / count));
+  return (ringTables ??= {
+    cosMajor: angles(MAJOR_SEGMENTS, Math.cos),
+    sinMajor: angles(MAJOR_SEGMENTS, Math.sin),
+    cosMinor: angles(MINOR_SEGMENTS, Math.cos),
+    sinMinor: angles(MINOR_SEGMENTS, Math.sin),
+  });
+}
 /** Cells per side of the marching grid. */
 const GRID = 20;
 /** Corner offsets of the unit cube, and its split into six tetrahedra along the main diagonal. */
@@ -48,6 +66,7 @@ export class TorusSlicer {
   private readonly point: Float64Array;
   private readonly p: Float64Array;
   private readonly g: Float64Array;
+  private readonly rings: RingTables = tables();
   /** A point of the flat (px, py, pz) and f there, for `field`. */
   private readonly q = new Float64Array(4);
 
@@ -125,9 +144,8 @@ export class TorusSlicer {
     const f = this.p;
     const R = f[9]!;
     const tube = f[10]!;
-    const a = (2 * Math.PI * i) / MAJOR_SEGMENTS;
-    const b = (2 * Math.PI * j) / MINOR_SEGMENTS;
-    const ca = Math.cos(a), sa = Math.sin(a), cb = Math.cos(b), sb = Math.sin(b);
+    const t = this.rings;
+    const ca = t.cosMajor[i]!, sa = t.sinMajor[i]!, cb = t.cosMinor[j]!, sb = t.sinMinor[j]!;
     const rx = ca * f[0]! + sa * f[3]!, ry = ca * f[1]! + sa * f[4]!, rz = ca * f[2]! + sa * f[5]!;
     // outward normal: cos b · radial + sin b · w
     const nx = cb * rx + sb * f[6]!, ny = cb * ry + sb * f[7]!, nz = cb * rz + sb * f[8]!;

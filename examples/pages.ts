@@ -12,10 +12,18 @@ export interface ExamplePage {
   readonly title: string;
   /** One line on the card: what the page shows. */
   readonly summary: string;
+  /** Other URL queries the browser tests open the page with (e.g. 'd=4'). */
+  readonly variants?: readonly string[];
 }
 
 /** Every page, in the order of the index. */
 export const pages: readonly ExamplePage[] = [
+  {
+    dir: 'sandbox',
+    title: 'Sandbox, in 3D and 4D',
+    summary: 'Bodies that fall; in 4D each is shown by its cut with the flat w = sliceW, and a ruler of w intervals moves the flat.',
+    variants: ['d=4'],
+  },
   {
     dir: 'plugin',
     title: 'The five steps',

@@ -130,9 +130,13 @@ describe.runIf(present)('the examples site in Chromium', () => {
     await page.close();
   }, 60_000);
 
-  for (const entry of pages) {
-    it(`${entry.dir}: loads cleanly, draws, and (physics pages) advances and matches the worker`, async () => {
-      const { page, problems } = await open(`${base}/${entry.dir}/?frames=${FRAMES}`);
+  const visits = pages.flatMap((entry) => [
+    { dir: entry.dir, query: '', name: entry.dir },
+    ...(entry.variants ?? []).map((query) => ({ dir: entry.dir, query: `${query}&`, name: `${entry.dir}-${query.replace(/[^a-z0-9]+/gi, '')}` })),
+  ]);
+  for (const entry of visits) {
+    it(`${entry.name}: loads cleanly, draws, and (physics pages) advances and matches the worker`, async () => {
+      const { page, problems } = await open(`${base}/${entry.dir}/?${entry.query}frames=${FRAMES}`);
       await page.waitForSelector('canvas');
       await page.waitForTimeout(500);
       const physics = await hasDemo(page);
@@ -144,19 +148,19 @@ describe.runIf(present)('the examples site in Chromium', () => {
         const main = await poses(page);
         expect(main.length).toBeGreaterThan(0);
         expect(main).not.toEqual(early);
-        await page.screenshot({ path: join(artifacts, `${entry.dir}.png`) });
+        await page.screenshot({ path: join(artifacts, `${entry.name}.png`) });
         expect(await canvasVariance(page)).toBeGreaterThan(20);
-        const worker = await open(`${base}/${entry.dir}/?worker=1&frames=${FRAMES}`);
+        const worker = await open(`${base}/${entry.dir}/?${entry.query}worker=1&frames=${FRAMES}`);
         await waitFrames(worker.page, FRAMES);
         await worker.page.waitForTimeout(300);
         expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe('worker');
         expect(await poses(worker.page)).toEqual(main);
-        await worker.page.screenshot({ path: join(artifacts, `${entry.dir}-worker.png`) });
+        await worker.page.screenshot({ path: join(artifacts, `${entry.name}-worker.png`) });
         expect(worker.problems).toEqual([]);
         await worker.page.close();
       } else {
         await page.waitForTimeout(2000);
-        await page.screenshot({ path: join(artifacts, `${entry.dir}.png`) });
+        await page.screenshot({ path: join(artifacts, `${entry.name}.png`) });
         expect(await canvasVariance(page)).toBeGreaterThan(20);
       }
       expect(problems).toEqual([]);
@@ -191,4 +195,35 @@ describe.runIf(present)('the examples site in Chromium', () => {
       await run.page.close();
     }
   }, 240_000);
+
+  it('sandbox in 4D: dragging the ruler moves the flat, re-cuts the bodies and hides those it leaves', async () => {
+    const { page, problems } = await open(`${base}/sandbox/?d=4&frames=${FRAMES}`);
+    await waitFrames(page, FRAMES);
+    await page.waitForTimeout(300);
+    const seen = (): Promise<{ w: number; cuts: number[] }> =>
+      page.evaluate(() => {
+        const demo = (globalThis as { physinDemo?: { scene: { sliceW: number; children: { isPhysinMesh?: boolean; dimensions?: number | null; visible: boolean; geometry: { drawRange: { count: number } }; scale: { x: number } }[] } } }).physinDemo!;
+        const cuts = demo.scene.children
+          .filter((o) => o.isPhysinMesh && o.dimensions === 4)
+          .map((o) => (o.visible ? o.geometry.drawRange.count * 1000 + Math.round(o.scale.x * 1000) : -1));
+        return { w: demo.scene.sliceW, cuts };
+      });
+    const before = await seen();
+    expect(before.w).toBe(0);
+    const ruler = page.locator('#ruler');
+    const box = (await ruler.boundingBox())!;
+    // from the middle (w = 0) to nine tenths of the way (w = 2)
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width * 0.9, box.y + box.height / 2, { steps: 8 });
+    await page.mouse.up();
+    const after = await seen();
+    expect(after.w).toBeGreaterThan(1.5);
+    // some body the flat cut at w = 0 is hidden now, and the cuts changed
+    expect(before.cuts.some((c, i) => c >= 0 && after.cuts[i] === -1)).toBe(true);
+    expect(after.cuts).not.toEqual(before.cuts);
+    await page.screenshot({ path: join(artifacts, 'sandbox-ruler.png') });
+    expect(problems).toEqual([]);
+    await page.close();
+  }, 120_000);
 });

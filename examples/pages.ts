@@ -30,6 +30,12 @@ export const pages: readonly ExamplePage[] = [
     summary: "Physijs's interface in PhysiN: a stack of boxes, a ball thrown at it, an octahedron read from its geometry.",
   },
   {
+    dir: 'stress',
+    title: 'Stress: 1000 boxes',
+    summary: 'A pile of 1000 boxes, or 320 hypercubes in 4D, in this thread or in a worker: ms per step, main-thread ms per frame, awake bodies.',
+    variants: ['d=4'],
+  },
+  {
     dir: 'rotors',
     title: 'Rotors that stay rotations',
     summary: 'A tesseract in a 4D double rotation: why normalising a rotor is not enough, and what rotorCorrect does.',

@@ -25,6 +25,11 @@ export const pages: readonly ExamplePage[] = [
     variants: ['d=4'],
   },
   {
+    dir: 'donuts',
+    title: 'Two donuts make a chain link',
+    summary: 'Two solid 4D tori: lift one in w, slide it along x, bring it back, and they are linked without a cut.',
+  },
+  {
     dir: 'plugin',
     title: 'The five steps',
     summary: "Physijs's interface in PhysiN: a stack of boxes, a ball thrown at it, an octahedron read from its geometry.",

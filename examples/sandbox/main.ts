@@ -20,7 +20,7 @@ import {
 } from '@physin/three';
 import type { Mesh } from '@physin/three';
 import { dressScene, startDemo, wantsWorker } from '../shared/demo.js';
-import { drawRuler, rulerValueAt, wInterval } from './ruler.js';
+import { mountRuler } from '../shared/ruler.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
@@ -138,8 +138,6 @@ switchThread.textContent = wantsWorker() ? 'Run in the main thread' : 'Run in a 
 // --- the ruler (4D) ---------------------------------------------------------------------------
 if (n === 4) {
   document.getElementById('explain-4')!.hidden = false;
-  const ruler = document.getElementById('ruler') as HTMLCanvasElement;
-  ruler.hidden = false;
   const slider = gui.add(actions, 'sliceW', -2.5, 2.5, 0.01).name('sliceW').onChange((w: number) => setSlice(w));
   const setSlice = (w: number): void => {
     scene.sliceW = w;
@@ -147,29 +145,7 @@ if (n === 4) {
     actions.sliceW = w;
     slider.updateDisplay();
   };
-  let dragging = false;
-  const move = (event: PointerEvent): void => {
-    if (!dragging) return;
-    const box = ruler.getBoundingClientRect();
-    setSlice(rulerValueAt((event.clientX - box.left) / box.width));
-  };
-  ruler.addEventListener('pointerdown', (event) => {
-    dragging = true;
-    ruler.setPointerCapture(event.pointerId);
-    move(event);
-  });
-  ruler.addEventListener('pointermove', move);
-  ruler.addEventListener('pointerup', () => (dragging = false));
-  const paint = (): void => {
-    requestAnimationFrame(paint);
-    const rows = bodies.map((mesh) => {
-      const [lo, hi] = wInterval(mesh);
-      const material = mesh.material as THREE.MeshStandardMaterial;
-      return { lo, hi, cut: mesh.visible, colour: `#${material.color.getHexString()}` };
-    });
-    drawRuler(ruler, rows, scene.sliceW);
-  };
-  paint();
+  mountRuler(document.getElementById('ruler') as HTMLCanvasElement, scene, bodies, setSlice);
 } else {
   document.getElementById('explain-3')!.innerHTML =
     '<p>Boxes, balls and tori fall on a floor: the same engine as in 4D, with n = 3. Its rotors are quaternions here, and <code>mesh.quaternion</code> is three\'s quaternion of the body. Switch to 4D to see the same scene one dimension up.</p>';

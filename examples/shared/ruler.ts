@@ -1,10 +1,12 @@
 /**
- * The sandbox's ruler: one band per 4D body over the interval of w it covers, a marker at the
- * flat's w; the flat cuts a body whose band the marker crosses.
+ * The ruler of the 4D pages (sandbox, donuts): one band per 4D body over the interval of w it
+ * covers, a marker at the flat's w; the flat cuts a body whose band the marker crosses. Dragging
+ * it moves the flat.
  */
 import { dims, rotorToMatrix } from '@physin/algebra';
 import { HyperBoxMesh, HyperSphereMesh, HyperTorusMesh } from '@physin/three';
-import type { Mesh } from '@physin/three';
+import type { Mesh, Scene } from '@physin/three';
+import type * as THREE from 'three';
 
 /** The w range the ruler shows. */
 export const RULER_MIN = -2.5;
@@ -98,4 +100,35 @@ export function drawRuler(canvas: HTMLCanvasElement, rows: readonly RulerRow[], 
   ctx.fillStyle = '#ffa040';
   ctx.textAlign = x > w - 70 ? 'right' : 'left';
   ctx.fillText(`sliceW ${sliceW.toFixed(2)}`, x + (x > w - 70 ? -4 : 4), 12);
+}
+
+/**
+ * Shows the ruler on `canvas` for `bodies` (read at every frame, so bodies added later appear)
+ * and lets the user drag the flat: `setW(w)` is called with the new w.
+ */
+export function mountRuler(canvas: HTMLCanvasElement, scene: Scene, bodies: readonly Mesh[], setW: (w: number) => void): void {
+  canvas.hidden = false;
+  let dragging = false;
+  const move = (event: PointerEvent): void => {
+    if (!dragging) return;
+    const box = canvas.getBoundingClientRect();
+    setW(rulerValueAt((event.clientX - box.left) / box.width));
+  };
+  canvas.addEventListener('pointerdown', (event) => {
+    dragging = true;
+    canvas.setPointerCapture(event.pointerId);
+    move(event);
+  });
+  canvas.addEventListener('pointermove', move);
+  canvas.addEventListener('pointerup', () => (dragging = false));
+  const paint = (): void => {
+    requestAnimationFrame(paint);
+    const rows = bodies.map((mesh) => {
+      const [lo, hi] = wInterval(mesh);
+      const material = mesh.material as THREE.MeshStandardMaterial;
+      return { lo, hi, cut: mesh.visible, colour: `#${material.color.getHexString()}` };
+    });
+    drawRuler(canvas, rows, scene.sliceW);
+  };
+  paint();
 }

@@ -35,6 +35,12 @@ export const pages: readonly ExamplePage[] = [
     summary: "Physijs's interface in PhysiN: a stack of boxes, a ball thrown at it, an octahedron read from its geometry.",
   },
   {
+    dir: 'joints',
+    title: 'Joints',
+    summary: 'A pendulum, a whipping chain, a motorised door, a joint that breaks; in 4D a hinge that turns through w and a pin moved along it.',
+    variants: ['d=4'],
+  },
+  {
     dir: 'stress',
     title: 'Stress: 1000 boxes',
     summary: 'A pile of 1000 boxes, or 320 hypercubes in 4D, in this thread or in a worker: ms per step, main-thread ms per frame, awake bodies.',

@@ -47,6 +47,11 @@ export const pages: readonly ExamplePage[] = [
     variants: ['d=4'],
   },
   {
+    dir: 'trade',
+    title: 'The trade: accuracy against cost',
+    summary: 'Run a stack, a chain, a 1000:1 chain or a 4D stack with your iterations, sub-steps and rate: error against time, and against cost.',
+  },
+  {
     dir: 'rotors',
     title: 'Rotors that stay rotations',
     summary: 'A tesseract in a 4D double rotation: why normalising a rotor is not enough, and what rotorCorrect does.',

@@ -50,6 +50,7 @@ export const pages: readonly ExamplePage[] = [
     dir: 'trade',
     title: 'The trade: accuracy against cost',
     summary: 'Run a stack, a chain, a 1000:1 chain or a 4D stack with your iterations, sub-steps and rate: error against time, and against cost.',
+    variants: ['worker=1'],
   },
   {
     dir: 'rotors',

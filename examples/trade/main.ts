@@ -1,11 +1,15 @@
 /**
- * The trade page: runs a scene (scenes.ts) for 5 simulated seconds with the knobs the user picks,
- * a few steps per animation frame, and plots its error against time and each run's worst error
- * against its cost. The first run starts when the page opens.
+ * The trade page: runs a scene (scenes.ts) for 5 simulated seconds with the knobs the user picks
+ * (sweep.ts: a few steps per animation frame, or with `?worker=1` in the page's worker), and plots
+ * its error against time and each run's worst error against its cost. The first run starts when
+ * the page opens.
  */
 import GUI from 'lil-gui';
-import { PRESETS, SCENES, paramsOf } from './scenes.js';
-import type { Knobs, SceneName, TradeScene } from './scenes.js';
+import { wantsWorker } from '../shared/demo.js';
+import { PRESETS, SCENES } from './scenes.js';
+import type { Knobs, SceneName } from './scenes.js';
+import { Sweep } from './sweep.js';
+import type { Progress } from './sweep.js';
 
 const SECONDS = 5;
 const COLOURS = ['#ffa040', '#4ad8c8', '#ff5c8a', '#8ab4ff', '#c5e478', '#e0a0ff'];
@@ -13,54 +17,41 @@ const COLOURS = ['#ffa040', '#4ad8c8', '#ff5c8a', '#8ab4ff', '#c5e478', '#e0a0ff
 interface Run {
   readonly label: string;
   readonly colour: string;
-  readonly times: number[];
-  readonly errors: number[];
-  worst: number;
-  /** Milliseconds of this page per simulated second. */
-  cost: number;
-  done: boolean;
+  progress: Progress;
 }
 
 const runs: Run[] = [];
 const state: { scene: SceneName; preset: string } & Knobs = { scene: 'chain of 10', preset: 'default', ...PRESETS.default! };
-let current: { run: Run; scene: TradeScene; steps: number; total: number; ms: number } | null = null;
+/** In the page's thread: the sweep being stepped. With ?worker=1: the worker that steps it. */
+let local: Sweep | null = null;
+const worker = wantsWorker() ? new Worker(new URL('./sweep-worker.ts', import.meta.url), { type: 'module' }) : null;
+worker?.addEventListener('message', (event: MessageEvent<Progress>) => {
+  const run = runs[runs.length - 1];
+  if (run !== undefined) run.progress = event.data;
+});
 
 function start(): void {
-  const scene = SCENES[state.scene](paramsOf(state));
+  const knobs: Knobs = { iterations: state.iterations, subSteps: state.subSteps, rate: state.rate };
   const run: Run = {
-    label: `${state.scene}: it ${state.iterations}, sub ${state.subSteps}, ${state.rate} Hz`,
+    label: `${state.scene}: it ${knobs.iterations}, sub ${knobs.subSteps}, ${knobs.rate} Hz`,
     colour: COLOURS[runs.length % COLOURS.length]!,
-    times: [],
-    errors: [],
-    worst: 0,
-    cost: 0,
-    done: false,
+    progress: { times: [], errors: [], worst: 0, cost: 0, done: false },
   };
   runs.push(run);
   if (runs.length > 6) runs.shift();
-  current = { run, scene, steps: 0, total: Math.round(SECONDS * state.rate), ms: 0 };
+  if (worker !== null) {
+    local = null;
+    worker.postMessage({ scene: state.scene, knobs, seconds: SECONDS });
+  } else {
+    local = new Sweep(state.scene, knobs, SECONDS);
+    run.progress = local.progress;
+  }
 }
 
-/** Steps the current run for about 8 ms of this frame. */
+/** In the page's thread, steps the current run for about 8 ms of this frame. */
 function work(): void {
-  if (current === null) return;
-  const { run, scene } = current;
-  const until = performance.now() + 8;
-  while (current.steps < current.total && performance.now() < until) {
-    const t0 = performance.now();
-    scene.world.step();
-    current.ms += performance.now() - t0;
-    current.steps += 1;
-    const error = scene.error();
-    run.times.push(current.steps / state.rate);
-    run.errors.push(error);
-    run.worst = Math.max(run.worst, error);
-  }
-  run.cost = current.ms / (current.steps / state.rate);
-  if (current.steps >= current.total) {
-    run.done = true;
-    current = null;
-  }
+  if (local === null) return;
+  if (local.advance(8).done) local = null;
 }
 
 const errorCanvas = document.getElementById('error-plot') as HTMLCanvasElement;
@@ -103,8 +94,8 @@ function axes(ctx: CanvasRenderingContext2D, w: number, h: number, title: string
 function drawErrors(): void {
   const { ctx, w, h } = context(errorCanvas);
   axes(ctx, w, h, 'error (m) against time', `t (s), 0 … ${SECONDS}`);
-  runs.forEach((run, index) => {
-    ctx.strokeStyle = run.colour;
+  runs.forEach(({ colour, progress: run }, index) => {
+    ctx.strokeStyle = colour;
     ctx.globalAlpha = index === runs.length - 1 ? 1 : 0.35;
     ctx.lineWidth = index === runs.length - 1 ? 2 : 1;
     ctx.beginPath();
@@ -122,13 +113,13 @@ function drawErrors(): void {
 
 function drawCosts(): void {
   const { ctx, w, h } = context(costCanvas);
-  const most = Math.max(1, ...runs.map((r) => r.cost)) * 1.15;
+  const most = Math.max(1, ...runs.map((r) => r.progress.cost)) * 1.15;
   axes(ctx, w, h, 'worst error (m) against cost', `ms per simulated second, 0 … ${most.toFixed(0)}`);
-  for (const run of runs) {
+  for (const { colour, progress: run } of runs) {
     const x = 44 + (run.cost / most) * (w - 52);
     const y = 22 + ((LOG_MAX - logOf(run.worst)) / (LOG_MAX - LOG_MIN)) * (h - 44);
-    const front = runs.every((o) => o === run || !(o.done && o.cost <= run.cost && o.worst <= run.worst));
-    ctx.fillStyle = run.colour;
+    const front = runs.every(({ progress: o }) => o === run || !(o.done && o.cost <= run.cost && o.worst <= run.worst));
+    ctx.fillStyle = colour;
     ctx.beginPath();
     ctx.arc(x, y, front ? 6 : 4, 0, 2 * Math.PI);
     ctx.fill();
@@ -142,7 +133,7 @@ function drawCosts(): void {
 const legend = document.getElementById('legend')!;
 function drawLegend(): void {
   legend.innerHTML = runs
-    .map((r) => `<div><span style="background:${r.colour}"></span>${r.label} — worst ${r.worst.toExponential(2)} m, ${r.cost.toFixed(1)} ms/s${r.done ? '' : ' (running)'}</div>`)
+    .map((r) => `<div><span style="background:${r.colour}"></span>${r.label} — worst ${r.progress.worst.toExponential(2)} m, ${r.progress.cost.toFixed(1)} ms/s${r.progress.done ? '' : ' (running)'}${worker ? ' · worker' : ''}</div>`)
     .join('');
 }
 

@@ -21,7 +21,7 @@ import {
   createMaterial,
 } from '@physin/three';
 import type { Joint, Mesh } from '@physin/three';
-import { dressScene, startDemo, wantsWorker } from '../shared/demo.js';
+import { dressScene, linkSwitches, startDemo, wantsWorker } from '../shared/demo.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
@@ -168,18 +168,4 @@ document.getElementById('explain')!.innerHTML =
     : `<p>A 4D hinge leaves one plane of rotation free of six. Here it is the (x w) plane: the arm swings out of our flat and back, so its cut grows, thins and vanishes as it turns through w.</p>
        <p>The pin is a subspace joint that holds the teal hypercube's w and the three planes that hold w: it keeps a full 3D rotation and never turns out of the flat. Move it along w with the slider (<code>setAnchors(null, [0, 0, 0, w])</code>): the body slides there without a jump, and leaves the flat you see.</p>`;
 
-const query = (changes: Record<string, string | null>): string => {
-  const next = new URLSearchParams(window.location.search);
-  for (const [key, value] of Object.entries(changes)) {
-    if (value === null) next.delete(key);
-    else next.set(key, value);
-  }
-  const text = next.toString();
-  return text === '' ? '?' : `?${text}`;
-};
-const switchD = document.getElementById('switch-d') as HTMLAnchorElement;
-switchD.href = query({ d: n === 4 ? null : '4' });
-switchD.textContent = n === 4 ? 'The 3D joints' : 'The 4D joints';
-const switchThread = document.getElementById('switch-thread') as HTMLAnchorElement;
-switchThread.href = query({ worker: wantsWorker() ? null : '1' });
-switchThread.textContent = wantsWorker() ? 'Run in the main thread' : 'Run in a worker';
+linkSwitches({ n, to3: 'The 3D joints', to4: 'The 4D joints' });

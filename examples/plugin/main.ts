@@ -4,7 +4,7 @@
  */
 import * as THREE from 'three';
 import { BoxMesh, ConvexMesh, PlaneMesh, Scene, SphereMesh, createMaterial } from '@physin/three';
-import { dressScene, startDemo, wantsWorker } from '../shared/demo.js';
+import { dressScene, linkSwitches, startDemo, wantsWorker } from '../shared/demo.js';
 
 const stone = createMaterial(new THREE.MeshStandardMaterial({ color: 0x9aa4ae }), 0.8, 0.1);
 const teal = createMaterial(new THREE.MeshStandardMaterial({ color: 0x2a9d8f }), 0.6, 0.1);
@@ -44,8 +44,4 @@ const { scene, ball } = build();
 const canvas = document.getElementById('view') as HTMLCanvasElement;
 startDemo(scene, { canvas, eye: [6, 5, 12], target: [0, 2, 0], stats: document.getElementById('stats') });
 document.getElementById('again')!.addEventListener('click', () => throwBall(ball));
-const link = document.getElementById('thread') as HTMLAnchorElement;
-if (wantsWorker()) {
-  link.href = '?';
-  link.textContent = 'Run in the main thread';
-}
+linkSwitches();

@@ -19,24 +19,12 @@ import {
   createMaterial,
 } from '@physin/three';
 import type { Mesh } from '@physin/three';
-import { dressScene, startDemo, wantsWorker } from '../shared/demo.js';
+import { dressScene, linkSwitches, seeded, startDemo, wantsWorker } from '../shared/demo.js';
 import { mountRuler } from '../shared/ruler.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
 const COLORS = [0x2a9d8f, 0xe9a23b, 0x8e5aa8, 0xe76f51, 0x4d96d9, 0x8ab17d, 0xd1495b, 0x00a6a6];
-
-/** A small seeded generator (mulberry32): the same bodies at every load. */
-function seeded(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 const rand = seeded(2026);
 let colour = 0;
@@ -119,21 +107,7 @@ gui.add(actions, 'ball').name(n === 4 ? 'drop a hypersphere' : 'drop a ball');
 gui.add(actions, 'torus').name(n === 4 ? 'drop a 4D torus' : 'drop a torus');
 gui.add(actions, 'paused').name('pause').onChange((value: boolean) => (demo.paused = value));
 
-const query = (changes: Record<string, string | null>): string => {
-  const next = new URLSearchParams(window.location.search);
-  for (const [key, value] of Object.entries(changes)) {
-    if (value === null) next.delete(key);
-    else next.set(key, value);
-  }
-  const text = next.toString();
-  return text === '' ? '?' : `?${text}`;
-};
-const switchD = document.getElementById('switch-d') as HTMLAnchorElement;
-switchD.href = query({ d: n === 4 ? null : '4' });
-switchD.textContent = n === 4 ? 'Switch to 3D' : 'Switch to 4D';
-const switchThread = document.getElementById('switch-thread') as HTMLAnchorElement;
-switchThread.href = query({ worker: wantsWorker() ? null : '1' });
-switchThread.textContent = wantsWorker() ? 'Run in the main thread' : 'Run in a worker';
+linkSwitches({ n, to3: 'Switch to 3D', to4: 'Switch to 4D' });
 
 // --- the ruler (4D) ---------------------------------------------------------------------------
 if (n === 4) {

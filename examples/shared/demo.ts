@@ -37,6 +37,46 @@ export function wantsWorker(): boolean {
   return new URLSearchParams(window.location.search).get('worker') === '1';
 }
 
+/** This page's URL query with `changes` made (null removes a key), as an href. */
+export function withQuery(changes: Record<string, string | null>): string {
+  const next = new URLSearchParams(window.location.search);
+  for (const [key, value] of Object.entries(changes)) {
+    if (value === null) next.delete(key);
+    else next.set(key, value);
+  }
+  const text = next.toString();
+  return text === '' ? '?' : `?${text}`;
+}
+
+/**
+ * Points the page's switch links at the other variant: `#switch-thread` between the page's thread
+ * and the worker, and (when `dimensions` is given) `#switch-d` between 3D and 4D with its labels.
+ */
+export function linkSwitches(dimensions?: { readonly n: number; readonly to3: string; readonly to4: string }): void {
+  const thread = document.getElementById('switch-thread') as HTMLAnchorElement | null;
+  if (thread) {
+    thread.href = withQuery({ worker: wantsWorker() ? null : '1' });
+    thread.textContent = wantsWorker() ? 'Run in the main thread' : 'Run in a worker';
+  }
+  const d = document.getElementById('switch-d') as HTMLAnchorElement | null;
+  if (d && dimensions) {
+    d.href = withQuery({ d: dimensions.n === 4 ? null : '4' });
+    d.textContent = dimensions.n === 4 ? dimensions.to3 : dimensions.to4;
+  }
+}
+
+/** A small seeded generator (mulberry32), so a page's random scene is the same at every load. */
+export function seeded(seed: number): () => number {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = a;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
 /** Options of `startDemo`. */
 export interface DemoOptions {
   /** The canvas to draw on. */

@@ -6,7 +6,7 @@
 import * as THREE from 'three';
 import { BoxMesh, HyperBoxMesh, HyperPlaneMesh, PlaneMesh, Scene, createMaterial } from '@physin/three';
 import type { Mesh } from '@physin/three';
-import { dressScene, startDemo, wantsWorker } from '../shared/demo.js';
+import { dressScene, linkSwitches, startDemo, wantsWorker } from '../shared/demo.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
@@ -112,18 +112,4 @@ const apply = (scene as unknown as { applyReport(report: unknown): void }).apply
   apply(report);
 };
 
-const query = (changes: Record<string, string | null>): string => {
-  const next = new URLSearchParams(window.location.search);
-  for (const [key, value] of Object.entries(changes)) {
-    if (value === null) next.delete(key);
-    else next.set(key, value);
-  }
-  const text = next.toString();
-  return text === '' ? '?' : `?${text}`;
-};
-const switchD = document.getElementById('switch-d') as HTMLAnchorElement;
-switchD.href = query({ d: n === 4 ? null : '4' });
-switchD.textContent = n === 4 ? '1000 boxes (3D)' : '320 hypercubes (4D)';
-const switchThread = document.getElementById('switch-thread') as HTMLAnchorElement;
-switchThread.href = query({ worker: wantsWorker() ? null : '1' });
-switchThread.textContent = wantsWorker() ? 'Run in the main thread' : 'Run in a worker';
+linkSwitches({ n, to3: '1000 boxes (3D)', to4: '320 hypercubes (4D)' });

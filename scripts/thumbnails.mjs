@@ -22,13 +22,15 @@ const browser = await chromium.launch({
   executablePath: process.env.PHYSIN_CHROMIUM ?? '/usr/bin/chromium',
   args: ['--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', '--no-sandbox'],
 });
-const shots = pages.map((p) => ({ url: `${base}/${p.dir}/${p.query ?? ''}`, out: join(root, 'examples/public/thumbs', `${p.dir}.png`), size: [480, 300] }));
+// the donuts page plays its moves first: take it once the two are linked
+const waits = { donuts: 10000 };
+const shots = pages.map((p) => ({ url: `${base}/${p.dir}/`, out: join(root, 'examples/public/thumbs', `${p.dir}.png`), size: [480, 300], wait: waits[p.dir] ?? 4000 }));
 if (pages.some((p) => p.dir === 'sandbox')) shots.push({ url: `${base}/sandbox/?d=4`, out: join(root, 'docs/images/sandbox-4d.png'), size: [1200, 675] });
 for (const shot of shots) {
   mkdirSync(dirname(shot.out), { recursive: true });
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
   await page.goto(shot.url);
-  await page.waitForTimeout(4000);
+  await page.waitForTimeout(shot.wait ?? 4000);
   const png = (await page.locator('canvas').first().screenshot()).toString('base64');
   // scaled in the browser itself: draw the shot into a canvas of the wanted size (cropped to fit)
   const scaled = await page.evaluate(

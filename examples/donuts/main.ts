@@ -120,4 +120,4 @@ move();
 const canvas = document.getElementById('view') as HTMLCanvasElement;
 // the scripted moves advance once per simulated frame (not per animation frame), so a run is the
 // same in either thread
-startDemo(scene, { canvas, eye: [2.2, 3.2, 4.8], target: [0.9, 1.1, 0], stats: document.getElementById('stats'), beforeFrame: (frame) => advance(frame) });
+startDemo(scene, { canvas, eye: [2.4, 3.6, 6.2], target: [1.2, 1.1, 0], stats: document.getElementById('stats'), beforeFrame: (frame) => advance(frame) });

@@ -2,9 +2,9 @@
 // same starts (scenes/joint-scenes.mjs), then PhysiN alone in 4D.
 //
 // Scenes (gravity −9.81 e_1, dt 1/60, 600 steps = 10 s, sleep off):
-//   chain10 whip   the seed's chain of 10 links (1 kg, 1 m apart, first link to the world), starting
+//   chain10 whip   the specification's chain of 10 links (1 kg, 1 m apart, first link to the world), starting
 //                  horizontal: it whips. The issue's reference: worst joint error 0.23 in Rapier 0.21,
-//                  0.40 in cannon-es 0.20, 0.114 claimed by the seed.
+//                  0.40 in cannon-es 0.20, 0.114 claimed by the specification.
 //   chain10 hang   the same chain starting hanging (it settles).
 //   grid20         Box2D's "joint grid" scaled down: 20 × 20 balls (r 0.25, 1 kg, 1 m apart) in the
 //                  horizontal x-z plane, point joints to the right and "down" (+z) neighbours, the row
@@ -207,7 +207,7 @@ const fmt = (x) => (Number.isFinite(x) ? x.toPrecision(3) : String(x));
 const targets = [
   { target: 'chain10 whip, worst error (PhysiN defaults) below Rapier 0.21 (the issue\'s figure)', measured: fmt(whip), limit: '< 0.23', met: yesNo(whip < 0.23) },
   { target: 'chain10 whip, worst error below cannon-es 0.20 (the issue\'s figure)', measured: fmt(whip), limit: '< 0.40', met: yesNo(whip < 0.4) },
-  { target: "chain10 whip, worst error below the seed's claim", measured: fmt(whip), limit: '< 0.114', met: yesNo(whip < 0.114) },
+  { target: "chain10 whip, worst error below the specification's claim", measured: fmt(whip), limit: '< 0.114', met: yesNo(whip < 0.114) },
   { target: 'chain10 whip, worst error below Rapier in this run', measured: fmt(whip), limit: `< ${fmt(results['chain10 whip|Rapier'].worst)}`, met: yesNo(whip < results['chain10 whip|Rapier'].worst) },
   { target: 'chain10 whip, worst error below cannon-es in this run', measured: fmt(whip), limit: `< ${fmt(results['chain10 whip|cannon-es'].worst)}`, met: yesNo(whip < results['chain10 whip|cannon-es'].worst) },
 ];

@@ -189,7 +189,7 @@ describe('brief §10 identities', () => {
   });
 });
 
-describe('seed plan item 1: algebra identities for n = 2..6', () => {
+describe('test plan item 1: algebra identities for n = 2..6', () => {
   const rand = seeded(1);
   for (let n = 2; n <= 6; n += 1) {
     it(`n = ${n}: r ∧ a = [r]* a, r·w = [r]*ᵀ w, [R]₂ B = R B R~ (1e-14)`, () => {
@@ -241,7 +241,7 @@ describe('seed plan item 1: algebra identities for n = 2..6', () => {
   });
 });
 
-describe('the seed conventions', () => {
+describe('the specification conventions', () => {
   it('in 4D a torque in the (x w) plane is [0, 0, 9, 0, 0, 0]', () => {
     const D = dims(4);
     expect(Array.from(planeBivector(D, new Float64Array(6), 0, 3, 9))).toEqual([0, 0, 9, 0, 0, 0]);

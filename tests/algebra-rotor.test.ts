@@ -183,7 +183,7 @@ describe('rotor products and actions', () => {
   });
 });
 
-describe('seed plan item 2: rotor closure', () => {
+describe('test plan item 2: rotor closure', () => {
   for (let n = 2; n <= 6; n += 1) {
     it(`n = ${n}: the product of 200 random rotors, corrected, is a rotation (R R~ = 1, MᵀM = 1, det +1 to 1e-12)`, () => {
       const D = dims(n);
@@ -249,7 +249,7 @@ describe('correction', () => {
   });
 });
 
-describe('seed plan item 7 at the algebra level: double rotation stability', () => {
+describe('test plan item 7 at the algebra level: double rotation stability', () => {
   const rotorTolerance = 1e-9; // the engine's defaultParams.rotorTolerance
   const D = dims(4);
   const B = new Float64Array([1.3, 0, 0, 0, 0, -2.1]); // xy and zw at once: Pf(B) ≠ 0

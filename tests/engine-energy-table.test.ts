@@ -27,7 +27,7 @@ const axial = (a: number[]): number[] => [a[2]!, -a[1]!, a[0]!];
 /** The documented cases, in the order of the tables in the section. */
 const CASES = [
   { name: "3D box [1, 0.6, 0.3], axial ω (3, 0.2, 0.1) (the brief's case)", n: 3, box: [1, 0.6, 0.3], omega: axial([3, 0.2, 0.1]) },
-  { name: "3D box [1, 0.6, 0.3], axial ω (0.2, 3, 0.1) (the seed's regression case)", n: 3, box: [1, 0.6, 0.3], omega: axial([0.2, 3, 0.1]) },
+  { name: "3D box [1, 0.6, 0.3], axial ω (0.2, 3, 0.1) (the specification's regression case)", n: 3, box: [1, 0.6, 0.3], omega: axial([0.2, 3, 0.1]) },
   { name: '4D box [1, 0.6, 0.3, 0.45], ω (0.1, 0.2, 0.15, 3, 0.1, 0.2)', n: 4, box: [1, 0.6, 0.3, 0.45], omega: [0.1, 0.2, 0.15, 3, 0.1, 0.2] },
   { name: '3D box [1, 0.6, 0.3], fast spin axial ω (20, 3, 2)', n: 3, box: [1, 0.6, 0.3], omega: axial([20, 3, 2]) },
 ];

@@ -1,6 +1,6 @@
 /**
  * Free motion: the linear integrator against its closed form (identity 19), torque-free rotation
- * (identity 17: L bit-exact, energy error of the midpoint rotor step), the seed's regression on the
+ * (identity 17: L bit-exact, energy error of the midpoint rotor step), the specification's regression on the
  * direction of L, a symmetric top against the analytic precession, and the 3D engine against a
  * quaternion implementation of the same scheme written here.
  */
@@ -142,7 +142,7 @@ describe('identity 17: a torque-free body keeps L bit-exactly and its energy to 
   });
 });
 
-describe("the seed's regression: the direction of L does not turn", () => {
+describe("the specification's regression: the direction of L does not turn", () => {
   for (const h of [1 / 30, 1 / 60, 1 / 240]) {
     it(`box [1, 0.6, 0.3], axial ω (0.2, 3, 0.1), h = 1/${Math.round(1 / h)}: I_world(R)·ω stays along L0 to 1e-12 rad over 2 s`, () => {
       const D = dims(3);
@@ -261,7 +261,7 @@ describe('3D equals a quaternion reference integrator of the same midpoint schem
   const rand = seeded(303);
   const runs = [
     { name: 'the brief case, axial ω (3, 0.2, 0.1)', box: BOX3, axial: [3, 0.2, 0.1], angle: 0 },
-    { name: 'the seed regression, axial ω (0.2, 3, 0.1), turned start', box: BOX3, axial: [0.2, 3, 0.1], angle: 0.7 },
+    { name: 'the specification regression, axial ω (0.2, 3, 0.1), turned start', box: BOX3, axial: [0.2, 3, 0.1], angle: 0.7 },
     {
       name: 'a random box and spin',
       box: Array.from(randomArray(rand, 3, 0.2, 1.5)),

@@ -1,7 +1,7 @@
 /**
  * Rotation stability: the intermediate-plane instability in 3D (identity 18) and 4D, a 4D spin
  * confined to a 3D subspace that must stay there, and the 4D double rotation that needs the rotor
- * correction (the seed's section 10).
+ * correction (the specification's section 10).
  */
 import { describe, expect, it } from 'vitest';
 import { angularVelocityFromMomentum, Body, dims, HyperBox, World } from '@physin/engine';
@@ -136,7 +136,7 @@ describe('plan 7: a 4D double rotation stays a rotation', () => {
   /*
    * What goes wrong without the correction. The engine's own rotor step multiplies by an exact
    * exponential, so its defect only grows by rounding (the test above): there is nothing for the
-   * correction to do in 1e5 steps. The failure the seed describes comes from an update that leaves
+   * correction to do in 1e5 steps. The failure the specification describes comes from an update that leaves
    * the rotation group — the first-order update R ← (1 − h B/2) R followed by a normalisation,
    * which is what an engine ported from quaternions does. For a double rotation B² has a grade-4
    * part, so each step adds about (h²/2)·Pf(B) to the I component of R R~; normalising fixes the
@@ -147,7 +147,7 @@ describe('plan 7: a 4D double rotation stays a rotation', () => {
    * What it shows with our kernels: without the correction |R| stays 1 to rounding while the frame
    * stops being a rotation (orthonormality error ~1 by step 400) and the energy computed through
    * that frame is off by a factor of several; with the correction the frame stays orthonormal to
-   * rounding and only the (first-order) integration error of the energy remains. The seed reports
+   * rounding and only the (first-order) integration error of the energy remains. The specification reports
    * 3.3e+143 at step 400 for its implementation; ours cannot overflow, because a sandwich with a
    * unit-norm even element is bounded, so the blow-up shows as a bounded but wrong energy.
    */

@@ -119,7 +119,7 @@ const NS = [2, 3, 4, 5];
 
 // ---------------------------------------------------------------------------------------------
 
-describe('seed plan 4: a box given as a convex mesh matches HyperBox', () => {
+describe('test plan 4: a box given as a convex mesh matches HyperBox', () => {
   it('the Kuhn triangulation of the n-cube boundary is closed and has 2n(n−1)! facets', () => {
     for (const n of [2, 3, 4, 5, 6]) {
       const mesh = orientOutward(cubeBoundary(n, new Array(n).fill(1)), new Array(n).fill(0));

@@ -1,5 +1,5 @@
 /**
- * World: the seed's Node example, static and kinematic bodies, adding and removing bodies, the
+ * World: the specification's Node example, static and kinematic bodies, adding and removing bodies, the
  * argument checks (the world is left exactly as it was), and the non-finite policy.
  */
 import { describe, expect, it } from 'vitest';
@@ -34,7 +34,7 @@ function spinningWorld(n: number, count: number): World {
   return world;
 }
 
-describe("the seed's section 11 example (Node, no three.js)", () => {
+describe("the specification's section 11 example (Node, no three.js)", () => {
   it('runs 120 steps; the box lands on the half-space and rests there: y = 0.5 − penetration (≤ penetrationSlop + 1e-3), no sideways motion (< 1e-4), asleep by 2 s', () => {
     // The example as the specification gives it, unchanged but for the assertions.
     const D = dims(4);

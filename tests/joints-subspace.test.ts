@@ -1,5 +1,5 @@
 /**
- * Joints: the seed's 4D pin (identity 26 of the brief's §10) and the slide of `setAnchors`.
+ * Joints: the specification's 4D pin (identity 26 of the brief's §10) and the slide of `setAnchors`.
  *
  * The pin: SubspaceJoint(body, null, { lockAxes: [3], lockPlanes: [2, 4, 5], worldFrame: true })
  * holds the position on w and the three planes that hold w, (x w), (y w), (z w), in the world
@@ -85,7 +85,7 @@ function pinned(o: PinOptions) {
   };
 }
 
-describe('identity 26: the seed\'s 4D pin keeps w and the planes (x w), (y w), (z w) at 0 (1e-6) while the body tumbles in 3D', () => {
+describe('identity 26: the specification\'s 4D pin keeps w and the planes (x w), (y w), (z w) at 0 (1e-6) while the body tumbles in 3D', () => {
   const starts = [
     { label: 'axis-aligned box', turned: false, pushes: false, seed: 2601 },
     { label: 'box turned 0.4 rad in (x w) (inertia couples w-planes to 3D planes)', turned: true, pushes: false, seed: 2602 },

@@ -105,7 +105,7 @@ function rotationTakingToDown(u: number[]): Float64Array {
 
 // ---------------------------------------------------------------------------------------------
 
-describe('torus on the ground (seed plan 9)', () => {
+describe('torus on the ground (test plan 9)', () => {
   const R = 1;
   const r = 0.25;
 
@@ -210,7 +210,7 @@ describe('torus on the ground (seed plan 9)', () => {
   }
 });
 
-describe('convex mesh on the ground and against a ball (seed plan 10)', () => {
+describe('convex mesh on the ground and against a ball (test plan 10)', () => {
   for (const n of [3, 4]) {
     it(`n = ${n}: a cross polytope |x|₁ <= 0.5 resting on a facet has its centre at s/√n (penetrationSlop + 1e-3), the facet flat on the ground (1e-6)`, () => {
       const D = dims(n);

@@ -50,7 +50,7 @@ function standStack(n: number, count: number, seed: number, offset: number, step
   return { drift, heightErr, report };
 }
 
-describe('seed plan 8: collision in 4D', () => {
+describe('test plan 8: collision in 4D', () => {
   for (const dynamic of [false, true]) {
     const what = dynamic ? 'a dynamic hyperbox on the ground' : 'a static hyperbox';
     it(`a hypersphere (r 0.4) dropped 0.3 m onto ${what} rests at box top + r (±(slop + 1e-3)) for 10 s; sideways drift < 1e-3`, () => {

@@ -1,7 +1,7 @@
 // Joint scenes for bench/joints.bench.mjs, in PhysiN (any n) and, in 3D, in Rapier and cannon-es,
 // built from the same description so every engine simulates the same start.
 //
-// The chain (the seed's, section 8): `count` links of 1 kg, 1 m apart, the first joined to the
+// The chain (the specification's, section 8): `count` links of 1 kg, 1 m apart, the first joined to the
 // world at the origin. A link is a ball of radius 0.1 whose two anchors are at ±0.5 along the
 // chain (the midpoints between neighbouring centres). With these links Rapier 0.21 and cannon-es
 // 0.20 reproduce the issue's figures for the whipping chain (worst error 0.23 and 0.40); thin

@@ -1,6 +1,6 @@
 /**
  * Helpers for the joint tests (tests/joints-*.test.ts): world points of anchors, the error of a
- * point joint measured from the bodies' poses (not from the joint's own bookkeeping), the seed's
+ * point joint measured from the bodies' poses (not from the joint's own bookkeeping), the specification's
  * chain of 10 links, hinge angles and locked-plane errors from the relative rotor, and snapshots
  * of the whole body state (for "nothing changed" checks).
  *
@@ -86,7 +86,7 @@ export function snapshot(world: World): number[] {
   return out;
 }
 
-/** One link of the seed's chain: 1 m between its anchors (local ±0.5 e_0), 1 kg. */
+/** One link of the specification's chain: 1 m between its anchors (local ±0.5 e_0), 1 kg. */
 export const LINK_HALF_LENGTH = 0.5;
 /** The radius of a link (a ball). */
 export const LINK_RADIUS = 0.1;
@@ -106,20 +106,20 @@ export interface ChainOptions {
   hanging: boolean;
   /** World parameters (merged over sleep off). */
   params?: Partial<Params>;
-  /** Mass of the last link (default 1 kg: the seed's chain). */
+  /** Mass of the last link (default 1 kg: the specification's chain). */
   lastMass?: number;
   /** Number of links (default 10). */
   count?: number;
 }
 
 /**
- * The seed's chain: `count` links of 1 kg, 1 m apart, the first link joined to the world at the
+ * The specification's chain: `count` links of 1 kg, 1 m apart, the first link joined to the world at the
  * origin. A link is a ball of radius 0.1 with its two anchors at local ±0.5 e_0 (the midpoints
  * between neighbouring centres); joints are point joints between the end of one link and the start
  * of the next. Horizontal: link i centred at ((i + 0.5), 0, …); hanging: centred at
  * (0, −(i + 0.5), 0, …), turned by −π/2 in the (x y) plane so that its local +x points down.
  * With these links Rapier 0.21 and cannon-es 0.20 reproduce the issue's whipping-chain errors
- * (0.23 and 0.40: bench/joints.bench.mjs), so this is the scene those figures, and the seed's, are
+ * (0.23 and 0.40: bench/joints.bench.mjs), so this is the scene those figures, and the specification's, are
  * most likely about.
  */
 export function buildChain(options: ChainOptions): Chain {

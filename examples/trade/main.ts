@@ -1,163 +1,189 @@
 /**
- * The trade page: runs a scene (scenes.ts) for 5 simulated seconds with the knobs the user picks
- * (sweep.ts: a few steps per animation frame, or with `?worker=1` in the page's worker), and plots
- * its error against time and each run's worst error against its cost. The first run starts when
- * the page opens.
+ * The trade page: runs a scene (scenes.ts) for 10 simulated seconds with the knobs the user picks
+ * (sweep.ts: steps for a few milliseconds of each animation frame, or with `?worker=1` in the
+ * page's worker), and plots its error against time, its milliseconds per step, and each run's
+ * worst error against its cost (plot.ts). Earlier runs stay on the plots, faded, with a legend.
+ * When the page opens it runs the three presets on the chain, so the trade shows at once.
+ *
+ * This page sets no `globalThis.physinDemo`: it has no @physin/three scene; the browser tests
+ * check that it loads without errors and that its first canvas (the error plot) is not blank.
  */
 import GUI from 'lil-gui';
 import { wantsWorker } from '../shared/demo.js';
-import { PRESETS, SCENES } from './scenes.js';
-import type { Knobs, SceneName } from './scenes.js';
+import { drawCosts, drawErrors, drawTrade, drawView } from './plot.js';
+import { PRESETS, RATES, SCENES } from './scenes.js';
+import type { Knobs, PresetName, SceneName } from './scenes.js';
 import { Sweep } from './sweep.js';
 import type { Progress } from './sweep.js';
 
-const SECONDS = 5;
-const COLOURS = ['#ffa040', '#4ad8c8', '#ff5c8a', '#8ab4ff', '#c5e478', '#e0a0ff'];
+const COLOURS = ['#ffa040', '#4ad8c8', '#ff5c8a', '#8ab4ff', '#c5e478', '#e0a0ff', '#ffd966', '#7fe0a0'];
+/** Runs kept on the plots. */
+const KEPT = 8;
+/** Milliseconds of each animation frame the page's thread spends stepping. */
+const BUDGET_MS = 10;
 
 interface Run {
-  readonly label: string;
+  readonly id: number;
+  readonly scene: SceneName;
+  readonly knobs: Knobs;
+  readonly seconds: number;
   readonly colour: string;
   progress: Progress;
 }
+interface Order {
+  readonly scene: SceneName;
+  readonly knobs: Knobs;
+  readonly seconds: number;
+}
+
+const query = new URLSearchParams(window.location.search);
+const startScene = query.get('scene');
+const state = {
+  scene: (startScene !== null && startScene in SCENES ? startScene : 'chain of 10') as SceneName,
+  preset: 'default' as PresetName | 'custom',
+  ...PRESETS.default,
+  seconds: 10,
+};
 
 const runs: Run[] = [];
-const state: { scene: SceneName; preset: string } & Knobs = { scene: 'chain of 10', preset: 'default', ...PRESETS.default! };
-/** In the page's thread: the sweep being stepped. With ?worker=1: the worker that steps it. */
-let local: Sweep | null = null;
+const queue: Order[] = [];
+let nextId = 1;
+let colourIndex = 0;
+/** The run under way, and (in the page's thread) its sweep. */
+let current: Run | null = null;
+let sweep: Sweep | null = null;
+let dirty = true;
+
 const worker = wantsWorker() ? new Worker(new URL('./sweep-worker.ts', import.meta.url), { type: 'module' }) : null;
-worker?.addEventListener('message', (event: MessageEvent<Progress>) => {
-  const run = runs[runs.length - 1];
-  if (run !== undefined) run.progress = event.data;
+worker?.addEventListener('message', (event: MessageEvent<{ id: number; progress: Progress }>) => {
+  const run = runs.find((r) => r.id === event.data.id);
+  if (run === undefined) return;
+  run.progress = event.data.progress;
+  dirty = true;
+  if (run === current && run.progress.done) current = null;
+});
+worker?.addEventListener('error', (event) => {
+  console.warn('trade: the worker failed', event.message);
 });
 
-function start(): void {
-  const knobs: Knobs = { iterations: state.iterations, subSteps: state.subSteps, rate: state.rate };
-  const run: Run = {
-    label: `${state.scene}: it ${knobs.iterations}, sub ${knobs.subSteps}, ${knobs.rate} Hz`,
-    colour: COLOURS[runs.length % COLOURS.length]!,
-    progress: { times: [], errors: [], worst: 0, cost: 0, done: false },
-  };
+function emptyProgress(order: Order): Progress {
+  return { times: [], errors: [], costs: [], worst: 0, msPerStep: 0, msPerSecond: 0, total: Math.round(order.seconds * order.knobs.rate), done: false, bodies: [], links: [], frame: [0, 1, 0, 1], failure: null };
+}
+
+function start(order: Order): void {
+  const run: Run = { id: nextId, ...order, colour: COLOURS[colourIndex % COLOURS.length]!, progress: emptyProgress(order) };
+  nextId += 1;
+  colourIndex += 1;
   runs.push(run);
-  if (runs.length > 6) runs.shift();
+  while (runs.length > KEPT) runs.shift();
+  current = run;
   if (worker !== null) {
-    local = null;
-    worker.postMessage({ scene: state.scene, knobs, seconds: SECONDS });
+    sweep = null;
+    worker.postMessage({ id: run.id, scene: run.scene, knobs: run.knobs, seconds: run.seconds });
   } else {
-    local = new Sweep(state.scene, knobs, SECONDS);
-    run.progress = local.progress;
+    sweep = new Sweep(run.scene, run.knobs, run.seconds);
+    run.progress = sweep.progress;
   }
+  dirty = true;
 }
 
-/** In the page's thread, steps the current run for about 8 ms of this frame. */
+/** Queues a run with the knobs as they are; it starts when the one under way ends. */
+function order(knobs: Knobs = { iterations: state.iterations, subSteps: state.subSteps, rate: state.rate }): void {
+  queue.push({ scene: state.scene, knobs: { ...knobs }, seconds: state.seconds });
+}
+
 function work(): void {
-  if (local === null) return;
-  if (local.advance(8).done) local = null;
-}
-
-const errorCanvas = document.getElementById('error-plot') as HTMLCanvasElement;
-const costCanvas = document.getElementById('cost-plot') as HTMLCanvasElement;
-
-function context(canvas: HTMLCanvasElement): { ctx: CanvasRenderingContext2D; w: number; h: number } {
-  const ratio = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth;
-  const h = canvas.clientHeight;
-  if (canvas.width !== Math.round(w * ratio) || canvas.height !== Math.round(h * ratio)) {
-    canvas.width = Math.round(w * ratio);
-    canvas.height = Math.round(h * ratio);
-  }
-  const ctx = canvas.getContext('2d')!;
-  ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
-  ctx.clearRect(0, 0, w, h);
-  ctx.font = '11px ui-monospace, monospace';
-  return { ctx, w, h };
-}
-
-const LOG_MIN = -8;
-const LOG_MAX = 2;
-const logOf = (e: number): number => Math.min(LOG_MAX, Math.max(LOG_MIN, Math.log10(Math.max(e, 1e-12))));
-
-function axes(ctx: CanvasRenderingContext2D, w: number, h: number, title: string, xLabel: string): void {
-  ctx.fillStyle = 'rgba(220,226,236,0.8)';
-  ctx.fillText(title, 48, 14);
-  ctx.fillText(xLabel, w - 8 - ctx.measureText(xLabel).width, h - 4);
-  ctx.strokeStyle = 'rgba(255,255,255,0.10)';
-  for (let e = LOG_MIN; e <= LOG_MAX; e += 2) {
-    const y = 22 + ((LOG_MAX - e) / (LOG_MAX - LOG_MIN)) * (h - 44);
-    ctx.beginPath();
-    ctx.moveTo(44, y);
-    ctx.lineTo(w - 8, y);
-    ctx.stroke();
-    ctx.fillText(`1e${e}`, 4, y + 4);
-  }
-}
-
-function drawErrors(): void {
-  const { ctx, w, h } = context(errorCanvas);
-  axes(ctx, w, h, 'error (m) against time', `t (s), 0 … ${SECONDS}`);
-  runs.forEach(({ colour, progress: run }, index) => {
-    ctx.strokeStyle = colour;
-    ctx.globalAlpha = index === runs.length - 1 ? 1 : 0.35;
-    ctx.lineWidth = index === runs.length - 1 ? 2 : 1;
-    ctx.beginPath();
-    run.times.forEach((t, i) => {
-      const x = 44 + (t / SECONDS) * (w - 52);
-      const y = 22 + ((LOG_MAX - logOf(run.errors[i]!)) / (LOG_MAX - LOG_MIN)) * (h - 44);
-      if (i === 0) ctx.moveTo(x, y);
-      else ctx.lineTo(x, y);
-    });
-    ctx.stroke();
-  });
-  ctx.globalAlpha = 1;
-  ctx.lineWidth = 1;
-}
-
-function drawCosts(): void {
-  const { ctx, w, h } = context(costCanvas);
-  const most = Math.max(1, ...runs.map((r) => r.progress.cost)) * 1.15;
-  axes(ctx, w, h, 'worst error (m) against cost', `ms per simulated second, 0 … ${most.toFixed(0)}`);
-  for (const { colour, progress: run } of runs) {
-    const x = 44 + (run.cost / most) * (w - 52);
-    const y = 22 + ((LOG_MAX - logOf(run.worst)) / (LOG_MAX - LOG_MIN)) * (h - 44);
-    const front = runs.every(({ progress: o }) => o === run || !(o.done && o.cost <= run.cost && o.worst <= run.worst));
-    ctx.fillStyle = colour;
-    ctx.beginPath();
-    ctx.arc(x, y, front ? 6 : 4, 0, 2 * Math.PI);
-    ctx.fill();
-    if (front && run.done) {
-      ctx.strokeStyle = '#ffffff';
-      ctx.stroke();
+  if (current === null && queue.length > 0) start(queue.shift()!);
+  if (sweep !== null && current !== null) {
+    const p = sweep.advance(BUDGET_MS);
+    dirty = true;
+    if (p.done) {
+      sweep = null;
+      current = null;
     }
   }
 }
 
-const legend = document.getElementById('legend')!;
+const errorCanvas = document.getElementById('error-plot') as HTMLCanvasElement;
+const costCanvas = document.getElementById('cost-plot') as HTMLCanvasElement;
+const tradeCanvas = document.getElementById('trade-plot') as HTMLCanvasElement;
+const viewCanvas = document.getElementById('view') as HTMLCanvasElement;
+const legend = document.getElementById('legend') as HTMLTableSectionElement;
+
+function rateLabel(rate: number): string {
+  return `1/${rate}`;
+}
+
+function fmtError(e: number): string {
+  if (!Number.isFinite(e)) return 'apart';
+  return e === 0 ? '0' : e.toExponential(1);
+}
+
 function drawLegend(): void {
-  legend.innerHTML = runs
-    .map((r) => `<div><span style="background:${r.colour}"></span>${r.label} — worst ${r.progress.worst.toExponential(2)} m, ${r.progress.cost.toFixed(1)} ms/s${r.progress.done ? '' : ' (running)'}${worker ? ' · worker' : ''}</div>`)
-    .join('');
+  const rows = runs
+    .map((r, i) => {
+      const p = r.progress;
+      const status = p.failure !== null ? `stopped: ${p.failure}` : p.done ? 'done' : r === current ? `running ${Math.round((100 * p.times.length) / Math.max(1, p.total))} %` : 'stopped';
+      const faded = i === runs.length - 1 ? '' : ' class="faded"';
+      return `<tr${faded}><td><span class="swatch" style="background:${r.colour}"></span>${r.scene}</td><td>${r.knobs.iterations}</td><td>${r.knobs.subSteps}</td><td>${rateLabel(r.knobs.rate)}</td><td>${fmtError(p.worst)}</td><td>${p.msPerStep.toFixed(3)}</td><td>${p.msPerSecond.toFixed(1)}</td><td class="status">${status}</td></tr>`;
+    })
+    .reverse();
+  legend.innerHTML = rows.join('') || '<tr><td colspan="8">no runs yet</td></tr>';
+}
+
+function draw(): void {
+  const seconds = Math.max(state.seconds, ...runs.map((r) => r.seconds));
+  drawErrors(errorCanvas, runs, seconds);
+  drawCosts(costCanvas, runs, seconds);
+  drawTrade(tradeCanvas, runs);
+  drawView(viewCanvas, current ?? runs[runs.length - 1]);
+  drawLegend();
 }
 
 const frame = (): void => {
   requestAnimationFrame(frame);
   work();
-  drawErrors();
-  drawCosts();
-  drawLegend();
+  if (dirty) {
+    dirty = false;
+    draw();
+  }
 };
 
-const gui = new GUI({ container: document.getElementById('gui')!, title: 'Run' });
+const gui = new GUI({ container: document.getElementById('gui')!, title: 'Scene and knobs', width: 360 });
 gui.add(state, 'scene', Object.keys(SCENES));
-gui
-  .add(state, 'preset', Object.keys(PRESETS))
+const presetController = gui
+  .add(state, 'preset', [...Object.keys(PRESETS), 'custom'])
   .onChange((name: string) => {
-    Object.assign(state, PRESETS[name]);
+    if (name in PRESETS) Object.assign(state, PRESETS[name as PresetName]);
     gui.controllersRecursive().forEach((c) => c.updateDisplay());
   });
-gui.add(state, 'iterations', 1, 50, 1);
-gui.add(state, 'subSteps', 1, 16, 1).name('sub-steps');
-gui.add(state, 'rate', [30, 60, 120, 240, 480]).name('rate (Hz)');
-gui.add({ run: start }, 'run').name('run 5 s');
-gui.add({ clear: () => (runs.length = 0) }, 'clear').name('clear the plots');
+const custom = (): void => {
+  state.preset = 'custom';
+  presetController.updateDisplay();
+};
+gui.add(state, 'iterations', 1, 50, 1).onChange(custom);
+gui.add(state, 'subSteps', 1, 16, 1).name('sub-steps').onChange(custom);
+gui.add(state, 'rate', RATES).name('time step').onChange(custom);
+gui.add(state, 'seconds', 1, 30, 1).name('simulated s');
+gui.add({ run: () => order() }, 'run').name('▶ run');
+gui.add({ compare: () => (Object.keys(PRESETS) as PresetName[]).forEach((name) => order(PRESETS[name])) }, 'compare').name('▶ run the three presets');
+gui.add(
+  {
+    clear: () => {
+      queue.length = 0;
+      runs.length = 0;
+      if (current !== null) current = null;
+      sweep = null;
+      if (worker !== null) worker.postMessage({ id: 0, scene: state.scene, knobs: { iterations: 1, subSteps: 1, rate: 60 }, seconds: 0 });
+      dirty = true;
+    },
+  },
+  'clear',
+).name('clear the plots');
 
-start();
+window.addEventListener('resize', () => (dirty = true));
+
+// The first picture: the three presets on the chosen scene.
+(['fast', 'default', 'accurate'] as const).forEach((name) => order(PRESETS[name]));
+draw();
 frame();

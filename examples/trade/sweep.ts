@@ -43,7 +43,7 @@ export function warmUp(): void {
   warm = true;
   for (const build of Object.values(SCENES)) {
     const scene = build(paramsOf({ iterations: 10, subSteps: 2, rate: 60 }));
-    for (let i = 0; i < 40; i += 1) scene.world.step();
+    for (let i = 0; i < 120; i += 1) scene.world.step();
     scene.error();
     scene.outline();
   }

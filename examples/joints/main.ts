@@ -22,6 +22,7 @@ import {
 } from '@physin/three';
 import type { Joint, Mesh } from '@physin/three';
 import { dressScene, linkSwitches, startDemo, wantsWorker } from '../shared/demo.js';
+import { JointLines } from './links.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
@@ -32,25 +33,35 @@ const amber = paint(0xe9a23b);
 const plum = paint(0x8e5aa8);
 const coral = paint(0xe76f51);
 
-const settings = { chain: 'point' as 'point' | 'distance', soft: false, motorSpeed: 1.5, maxTorque: 40, limit: 1.2, pinW: 0, sliceW: 0 };
+const settings = { chain: 'point' as 'point' | 'distance', soft: false, motorSpeed: n === 4 ? 0.8 : 1.5, maxTorque: 40, limit: 1.2, pinW: 0, sliceW: 0 };
 const status = document.getElementById('status')!;
+const message = document.getElementById('message')!;
 let load = 0;
 let broken = false;
 let hinge: HingeJoint | null = null;
 let pin: SubspaceJoint | null = null;
 let breaker: Mesh | null = null;
+let lines: JointLines | null = null;
+let arm: Mesh | null = null;
+let pinned: Mesh | null = null;
+/** Where the 4D hinge holds the arm (in the world). */
+const HINGE_4D = [-2, 3.3, 0, 0] as const;
 
 /** The 3D scene of joints. */
 function build3(): Scene {
   const scene = new Scene({ dimensions: 3, gravity: [0, -9.81, 0], worker: wantsWorker() });
   dressScene(scene);
   scene.add(new PlaneMesh(new THREE.BoxGeometry(30, 0.2, 30).translate(0, -0.1, 0), stone, [0, 1, 0], 0));
+  lines = new JointLines(scene);
+  message.hidden = true;
 
   // a pendulum: a ball 2 m from a fixed point, let go from the horizontal
   const bob = new SphereMesh(new THREE.SphereGeometry(0.3, 32, 16), amber, 1);
-  bob.setPositionN([-5, 5, 0]);
+  bob.setPositionN([-4, 5.5, -2]);
   scene.add(bob);
-  scene.addConstraint(new PointJoint(bob, null, [0, 0, 0], [-7, 5, 0]));
+  // the joint holds the point 2 m left of the ball's centre (in the ball's frame) on the pivot;
+  // the line is drawn from the ball's centre
+  scene.addConstraint(lines.add(new PointJoint(bob, null, [-2, 0, 0], [-6, 5.5, -2]), [0, 0, 0], [-6, 5.5, -2]));
 
   // a chain of 10 links hanging from a fixed point, starting horizontal (so it whips)
   let previous: Mesh | null = null;
@@ -59,12 +70,12 @@ function build3(): Scene {
     const box = new BoxMesh(link, teal, 0.5);
     box.setPositionN([-2 + 0.2 + i * 0.4, 6, 0]);
     scene.add(box);
-    const options = settings.soft ? { hertz: 8, damping: 0.7 } : {};
+    const there = previous === null ? [-2, 6, 0] : [0.2, 0, 0];
     const joint: Joint =
-      settings.chain === 'point'
-        ? new PointJoint(box, previous, [-0.2, 0, 0], previous === null ? [-2, 6, 0] : [0.2, 0, 0], options)
-        : new DistanceJoint(box, previous, [-0.2, 0, 0], previous === null ? [-2, 6, 0] : [0.2, 0, 0], { ...options, rest: 0.02 });
-    scene.addConstraint(joint);
+      settings.chain === 'point' ? new PointJoint(box, previous, [-0.2, 0, 0], there) : new DistanceJoint(box, previous, [-0.2, 0, 0], there, { rest: 0.02 });
+    // a spring of 8 Hz, damping ratio 0.7 (set before addConstraint: it becomes an option)
+    if (settings.soft) joint.setSoftness(8, 0.7);
+    scene.addConstraint(lines.add(joint, [-0.2, 0, 0], there));
     previous = box;
   }
 
@@ -84,38 +95,50 @@ function build3(): Scene {
     }),
   );
 
-  // a joint that breaks: a box held by a point joint of 150 N, pulled down harder every frame
+  // a joint that breaks: a box hung 1.2 m under a hook by a distance joint that breaks above
+  // 150 N, pulled down harder every frame
   const box = new BoxMesh(new THREE.BoxGeometry(0.6, 0.6, 0.6), coral, 2);
   box.setPositionN([1.5, 3, 3]);
   scene.add(box);
-  const weak = scene.addConstraint(new PointJoint(box, null, [0, 0.3, 0], [1.5, 3.3, 3], { breakForce: 150 }));
-  weak.addEventListener('broken', () => (broken = true));
+  const weak = new DistanceJoint(box, null, [0, 0.3, 0], [1.5, 4.5, 3]).setBreak(150, 0);
+  weak.addEventListener('broken', () => {
+    broken = true;
+    message.textContent = `The joint broke: ${load} N of pull + ${(2 * 9.81).toFixed(0)} N of weight passed its 150 N.`;
+    message.hidden = false;
+  });
+  scene.addConstraint(lines.add(weak, [0, 0.3, 0], [1.5, 4.5, 3]));
   breaker = box;
   load = 0;
   broken = false;
+  lines.finish();
   return scene;
 }
 
 /** The 4D scene: a hinge that turns through w, and the pin that holds a body in a 3D slice. */
 function build4(): Scene {
-  const scene = new Scene({ dimensions: 4, gravity: [0, -9.81, 0, 0], worker: wantsWorker() });
+  const scene = new Scene({ dimensions: 4, gravity: [0, -9.81, 0, 0], worker: wantsWorker(), sliceW: settings.sliceW });
   dressScene(scene);
   scene.add(new HyperPlaneMesh([0, 1, 0, 0], 0, stone, new THREE.BoxGeometry(30, 0.2, 30).translate(0, -0.1, 0)));
-  // a 4D hinge: the arm turns in the (x w) plane (index 2 of 01 02 03 12 13 23), out of the flat
-  // and back, so its cut grows, shrinks and vanishes while the arm swings
-  const base = new HyperBoxMesh([0.3, 1.5, 0.3, 0.3], stone, 0);
-  base.setPositionN([-2, 1.5, 0, 0]);
-  const arm = new HyperBoxMesh([1, 0.15, 0.3, 0.3], amber, 2);
-  arm.setPositionN([-0.7, 2.8, 0, 0]);
-  scene.add(base, arm);
+  message.hidden = true;
+  // a 4D hinge: the arm turns in the (x w) plane (index 2 of 01 02 03 12 13 23) about a point
+  // above the post, out of the flat and back: its cut is long when the arm lies in the flat and a
+  // short stub (its thickness in w) when the arm points along w
+  const base = new HyperBoxMesh([0.25, 1.5, 0.25, 0.25], stone, 0);
+  base.setPositionN([HINGE_4D[0], 1.5, 0, 0]);
+  const swing = new HyperBoxMesh([1.2, 0.12, 0.25, 0.25], amber, 2);
+  swing.setPositionN([HINGE_4D[0] + 1.2, HINGE_4D[1], 0, 0]);
+  scene.add(base, swing);
+  arm = swing;
   hinge = scene.addConstraint(
-    new HingeJoint(base, arm, [0.3, 1.3, 0, 0], [-1, 0, 0, 0], { plane: 2, motorSpeed: settings.motorSpeed, maxMotorTorque: settings.maxTorque }),
+    new HingeJoint(base, swing, [0, HINGE_4D[1] - 1.5, 0, 0], [-1.2, 0, 0, 0], { plane: 2 }).setMotor(settings.motorSpeed, settings.maxTorque),
   );
   // the pin: a hypercube kept at w = pinW with its three w-planes locked, free in x, y, z
   const body = new HyperBoxMesh([0.4, 0.4, 0.4, 0.4], teal, 1);
   body.setPositionN([2, 3, 0, 0]);
   body.setAngularVelocity([1, 0, 0, 2, 0, 0]);
   scene.add(body);
+  pinned = body;
+  settings.pinW = 0;
   pin = scene.addConstraint(new SubspaceJoint(body, null, { lockAxes: [3], lockPlanes: [2, 4, 5], worldFrame: true }));
   return scene;
 }
@@ -130,18 +153,34 @@ const frameWork = (): void => {
 };
 const demo = startDemo(n === 4 ? build4() : build3(), {
   canvas,
-  eye: n === 4 ? [1, 3.5, 8] : [0, 5, 13],
-  target: [0, 2.5, 0],
+  eye: n === 4 ? [0.6, 4.4, 6.2] : [-1, 5.5, 15],
+  target: n === 4 ? [0, 2.2, 0] : [-1, 3, 0],
   stats: document.getElementById('stats'),
   beforeFrame: frameWork,
   afterUpdate: () => {
-    status.innerHTML =
-      n === 3
-        ? `<dt>chain</dt><dd>${settings.chain} joints, ${settings.soft ? 'soft (8 Hz)' : 'rigid'}</dd>` +
-          `<dt>load</dt><dd>${broken ? `<b>broke</b> at about ${load} N + weight` : `${load} N + weight`}</dd>`
-        : `<dt>pin</dt><dd>w = ${settings.pinW.toFixed(2)}</dd>`;
+    lines?.update();
+    status.innerHTML = n === 3 ? status3() : status4();
   },
 });
+
+function status3(): string {
+  return (
+    `<dt>chain</dt><dd>${settings.chain} joints, ${settings.soft ? 'soft (8 Hz)' : 'rigid'}</dd>` +
+    `<dt>door</dt><dd>within ±${settings.limit.toFixed(2)} rad, motor ${settings.motorSpeed.toFixed(1)} rad/s</dd>` +
+    `<dt>pull</dt><dd>${broken ? `<b>broke</b> at ${load} N + weight` : `${load} N + weight (breaks above 150 N)`}</dd>`
+  );
+}
+
+function status4(): string {
+  const a = arm?.getPositionN();
+  const p = pinned?.getPositionN();
+  const angle = a ? (Math.atan2(a[3]!, a[0]! - HINGE_4D[0]) * 180) / Math.PI : 0;
+  return (
+    `<dt>arm</dt><dd>${angle.toFixed(0)}° from x towards w</dd>` +
+    `<dt>pin</dt><dd>w = ${settings.pinW.toFixed(2)}; the body at w = ${p ? p[3]!.toFixed(2) : '–'}</dd>` +
+    `<dt>flat</dt><dd>w = ${settings.sliceW.toFixed(2)}</dd>`
+  );
+}
 
 const gui = new GUI({ container: document.getElementById('gui')!, title: n === 4 ? 'Joints, 4D' : 'Joints' });
 if (n === 3) {
@@ -159,13 +198,18 @@ if (n === 4) {
     demo.hook.scene.refreshSlice();
   });
 }
-gui.add({ reset: () => demo.setScene(n === 4 ? build4() : build3()) }, 'reset');
+gui.add({ reset: () => {
+  demo.setScene(n === 4 ? build4() : build3());
+  for (const controller of gui.controllersRecursive()) controller.updateDisplay();
+} }, 'reset');
 
 document.getElementById('explain')!.innerHTML =
   n === 3
-    ? `<p>On the left a pendulum: a point joint holds the ball 2 m from a fixed point. The chain of ten links starts horizontal and whips as it falls: switch its joints between point joints (each holds a point on a point) and distance joints (each holds only a length), and make them soft (a spring of 8 Hz) to see what each keeps and what it gives up.</p>
-       <p>The door turns about y on a hinge: one plane of rotation free (xz), the others held, within limits, driven by a motor of bounded torque that stalls against a limit. The red box hangs from a joint that breaks above 150 N: the page pulls it down 1 N harder every frame until the joint lets go and leaves the scene (its <code>broken</code> event).</p>`
-    : `<p>A 4D hinge leaves one plane of rotation free of six. Here it is the (x w) plane: the arm swings out of our flat and back, so its cut grows, thins and vanishes as it turns through w.</p>
-       <p>The pin is a subspace joint that holds the teal hypercube's w and the three planes that hold w: it keeps a full 3D rotation and never turns out of the flat. Move it along w with the slider (<code>setAnchors(null, [0, 0, 0, w])</code>): the body slides there without a jump, and leaves the flat you see.</p>`;
+    ? `<p>On the left a <b>pendulum</b>: a <code>PointJoint</code> holds a point 2 m from the ball's centre on a fixed point (a dot), so the ball swings about it. The thin lines join each joint's two anchors.</p>
+       <p>The <b>chain</b> of ten links starts horizontal and whips as it falls. Switch its joints between point joints (a point of one link on a point of the next) and distance joints (only a length: links may fold), rigid or soft (<code>setSoftness(8, 0.7)</code>, a spring of 8 Hz): soft links stretch, and the lines show it.</p>
+       <p>The <b>door</b> turns about y on a <code>HingeJoint</code>: one of the three planes of rotation is free, xz (plane 1 of xy, xz, yz), within limits (<code>setLimits</code>), driven by a motor of bounded torque (<code>setMotor</code>) that stalls at a limit.</p>
+       <p>The red box hangs from a hook by a joint that breaks above 150 N (<code>setBreak(150, 0)</code>). The page pulls it 1 N harder every frame until the joint lets go and fires <code>broken</code>.</p>`
+    : `<p>A 4D <b>hinge</b> leaves one plane of rotation free of six. Here it is the (x w) plane (plane 2 of xy, xz, xw, yz, yw, zw): the motor turns the arm out of our flat and back. Its cut is the whole arm when it lies along x, and a short stub, its thickness in w, when it points along w; in between it is as long as the part of the arm that still crosses w = 0.</p>
+       <p>The <b>pin</b> is a <code>SubspaceJoint</code> that holds the teal hypercube's w and the three planes that turn through w (xw, yw, zw): it moves and turns freely in x, y, z and never tips out of the flat. Move the pin along w with the slider (<code>setAnchors(null, [0, 0, 0, w])</code>): the body slides there and its cut fades as it leaves the flat you see; move the flat (<code>scene.sliceW</code>) after it to find it again.</p>`;
 
 linkSwitches({ n, to3: 'The 3D joints', to4: 'The 4D joints' });

@@ -53,7 +53,13 @@ const mainMs: number[] = [];
 let frameStart = 0;
 let simulateMs = 0;
 let applyStart = 0;
-let awake = 0;
+let moved = 0;
+let drawn = 0;
+let lastDraw = 0;
+const drawMs: number[] = [];
+const reportTimes: number[] = [];
+/** Ids of the bodies the engine put to sleep (from each report's slept and woke lists). */
+const asleep = new Set<number>();
 const last = new Float64Array(bodies.length * 3);
 const push = (list: number[], value: number): void => {
   list.push(value);
@@ -69,20 +75,29 @@ const canvas = document.getElementById('view') as HTMLCanvasElement;
 const figures = document.getElementById('figures')!;
 startDemo(scene, {
   canvas,
-  eye: n === 4 ? [5, 4, 6] : [8, 7, 10],
+  eye: n === 4 ? [5, 4, 6] : [9.5, 8, 12.5],
   target: [0, 1, 0],
   stats: document.getElementById('stats'),
   beforeFrame: () => {
-    frameStart = performance.now();
+    // called at every drawn frame, also when a worker step is still in flight
+    const now = performance.now();
+    if (drawn > 0) push(drawMs, now - lastDraw);
+    drawn += 1;
+    lastDraw = now;
+    if (!scene.busy) frameStart = now;
   },
   afterUpdate: (frame) => {
     const now = performance.now();
-    push(stepMs, now - frameStart);
+    // in this thread the step is done inside simulate() (the report is applied after the frame's
+    // drawing, in a microtask); in a worker, from the request to the report's arrival
+    push(stepMs, scene.host.thread === 'main' ? simulateMs : now - frameStart);
     push(mainMs, simulateMs + (now - applyStart));
-    awake = 0;
+    reportTimes.push(now);
+    while (reportTimes.length > 0 && reportTimes[0]! < now - 1000) reportTimes.shift();
+    moved = 0;
     bodies.forEach((body, i) => {
       const p = body.position;
-      if (Math.abs(p.x - last[3 * i]!) + Math.abs(p.y - last[3 * i + 1]!) + Math.abs(p.z - last[3 * i + 2]!) > 1e-6) awake += 1;
+      if (Math.abs(p.x - last[3 * i]!) + Math.abs(p.y - last[3 * i + 1]!) + Math.abs(p.z - last[3 * i + 2]!) > 1e-6) moved += 1;
       last[3 * i] = p.x;
       last[3 * i + 1] = p.y;
       last[3 * i + 2] = p.z;
@@ -93,7 +108,9 @@ startDemo(scene, {
         `<dt>thread</dt><dd>${scene.host.thread}</dd>` +
         `<dt>step</dt><dd>${median(stepMs).toFixed(2)} ms</dd>` +
         `<dt>main thread</dt><dd>${median(mainMs).toFixed(2)} ms a frame</dd>` +
-        `<dt>awake</dt><dd>${awake}</dd>`;
+        `<dt>awake</dt><dd>${bodies.length - asleep.size} (${asleep.size} asleep)</dd>` +
+        `<dt>moved</dt><dd>${moved} in the last report</dd>` +
+        `<dt>rates</dt><dd>${reportTimes.length} steps/s, ${(1000 / Math.max(1e-3, median(drawMs))).toFixed(0)} frames/s drawn</dd>`;
     }
   },
 });
@@ -107,8 +124,17 @@ scene.simulate = (timeStep?: number, maxSubSteps?: number): boolean => {
   return ok;
 };
 const apply = (scene as unknown as { applyReport(report: unknown): void }).applyReport.bind(scene);
+interface SleepLists {
+  readonly slept: Int32Array;
+  readonly sleptCount: number;
+  readonly woke: Int32Array;
+  readonly wokeCount: number;
+}
 (scene as unknown as { applyReport(report: unknown): void }).applyReport = (report: unknown): void => {
   applyStart = performance.now();
+  const r = report as SleepLists;
+  for (let i = 0; i < r.sleptCount; i += 1) asleep.add(r.slept[i]!);
+  for (let i = 0; i < r.wokeCount; i += 1) asleep.delete(r.woke[i]!);
   apply(report);
 };
 

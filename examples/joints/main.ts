@@ -44,6 +44,8 @@ let breaker: Mesh | null = null;
 let lines: JointLines | null = null;
 let arm: Mesh | null = null;
 let pinned: Mesh | null = null;
+/** 4D: the arm's shadow on the flat (its far end with w dropped), a line from the hinge. */
+let shadow: THREE.Line | null = null;
 /** Where the 4D hinge holds the arm (in the world). */
 const HINGE_4D = [-2, 3.3, 0, 0] as const;
 
@@ -129,6 +131,16 @@ function build4(): Scene {
   swing.setPositionN([HINGE_4D[0] + 1.2, HINGE_4D[1], 0, 0]);
   scene.add(base, swing);
   arm = swing;
+  lines = null;
+  const dot = new THREE.Mesh(new THREE.SphereGeometry(0.06, 12, 8), new THREE.MeshBasicMaterial({ color: 0x1d2630 }));
+  dot.position.set(HINGE_4D[0], HINGE_4D[1], HINGE_4D[2]);
+  shadow = new THREE.Line(
+    new THREE.BufferGeometry().setFromPoints([dot.position, dot.position.clone().add(new THREE.Vector3(2.4, 0, 0))]),
+    new THREE.LineDashedMaterial({ color: 0x1d2630, dashSize: 0.12, gapSize: 0.08 }),
+  );
+  shadow.computeLineDistances();
+  shadow.frustumCulled = false;
+  scene.add(dot, shadow);
   hinge = scene.addConstraint(
     new HingeJoint(base, swing, [0, HINGE_4D[1] - 1.5, 0, 0], [-1.2, 0, 0, 0], { plane: 2 }).setMotor(settings.motorSpeed, settings.maxTorque),
   );
@@ -159,6 +171,14 @@ const demo = startDemo(n === 4 ? build4() : build3(), {
   beforeFrame: frameWork,
   afterUpdate: () => {
     lines?.update();
+    if (n === 4 && shadow !== null && arm !== null) {
+      // the far end is the hinge plus twice (centre − hinge); drop its w
+      const c = arm.getPositionN();
+      const ends = shadow.geometry.getAttribute('position') as THREE.BufferAttribute;
+      ends.setXYZ(1, 2 * c[0]! - HINGE_4D[0], 2 * c[1]! - HINGE_4D[1], 2 * c[2]! - HINGE_4D[2]);
+      ends.needsUpdate = true;
+      shadow.computeLineDistances();
+    }
     status.innerHTML = n === 3 ? status3() : status4();
   },
 });
@@ -209,7 +229,7 @@ document.getElementById('explain')!.innerHTML =
        <p>The <b>chain</b> of ten links starts horizontal and whips as it falls. Switch its joints between point joints (a point of one link on a point of the next) and distance joints (only a length: links may fold), rigid or soft (<code>setSoftness(8, 0.7)</code>, a spring of 8 Hz): soft links stretch, and the lines show it.</p>
        <p>The <b>door</b> turns about y on a <code>HingeJoint</code>: one of the three planes of rotation is free, xz (plane 1 of xy, xz, yz), within limits (<code>setLimits</code>), driven by a motor of bounded torque (<code>setMotor</code>) that stalls at a limit.</p>
        <p>The red box hangs from a hook by a joint that breaks above 150 N (<code>setBreak(150, 0)</code>). The page pulls it 1 N harder every frame until the joint lets go and fires <code>broken</code>.</p>`
-    : `<p>A 4D <b>hinge</b> leaves one plane of rotation free of six. Here it is the (x w) plane (plane 2 of xy, xz, xw, yz, yw, zw): the motor turns the arm out of our flat and back. Its cut is the whole arm when it lies along x, and a short stub, its thickness in w, when it points along w; in between it is as long as the part of the arm that still crosses w = 0.</p>
+    : `<p>A 4D <b>hinge</b> leaves one plane of rotation free of six. Here it is the (x w) plane (plane 2 of xy, xz, xw, yz, yw, zw): the motor turns the arm out of our flat and back. Its cut is the whole arm when it lies along x, and a short stub, its thickness in w, when it points along w; in between it is as long as the part of the arm that still crosses w = 0. The dashed line is the arm's shadow (w dropped): it shortens as the arm turns into w, while the cut stays by the hinge.</p>
        <p>The <b>pin</b> is a <code>SubspaceJoint</code> that holds the teal hypercube's w and the three planes that turn through w (xw, yw, zw): it moves and turns freely in x, y, z and never tips out of the flat. Move the pin along w with the slider (<code>setAnchors(null, [0, 0, 0, w])</code>): the body slides there. Held square to w, its cut stays the same whole cube until the pin passes w = ±0.4 (the body's half-width in w), then vanishes at once; move the flat (<code>scene.sliceW</code>) after it to find it again.</p>`;
 
 linkSwitches({ n, to3: 'The 3D joints', to4: 'The 4D joints' });

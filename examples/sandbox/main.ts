@@ -47,6 +47,8 @@ function spot(height: number): number[] {
 }
 
 type Kind = 'box' | 'ball' | 'torus';
+/** At most this many bodies (the floor aside). */
+const MAX_BODIES = 22;
 const bodies: Mesh[] = [];
 function drop(kind: Kind, height = 4 + rand() * 4): Mesh {
   let mesh: Mesh;
@@ -82,13 +84,20 @@ function drop(kind: Kind, height = 4 + rand() * 4): Mesh {
   }
   scene.add(mesh);
   bodies.push(mesh);
+  // a modest count keeps the page quick (SwiftShader draws it too): the oldest body leaves
+  while (bodies.length > MAX_BODIES) scene.remove(bodies.shift()!);
   return mesh;
 }
 
-for (let i = 0; i < 6; i += 1) drop('box', 1 + i * 1.2);
-for (let i = 0; i < 4; i += 1) drop('ball', 2 + i * 1.5);
-drop('torus', 3);
-drop('torus', 6);
+
+/** The starting bodies: six boxes, four balls, two tori. */
+function populate(): void {
+  for (let i = 0; i < 6; i += 1) drop('box', 1 + i * 1.2);
+  for (let i = 0; i < 4; i += 1) drop('ball', 2 + i * 1.5);
+  drop('torus', 3);
+  drop('torus', 6);
+}
+populate();
 
 const canvas = document.getElementById('view') as HTMLCanvasElement;
 const demo = startDemo(scene, { canvas, eye: [4.5, 3.6, 6.5], target: [0, 0.6, 0], stats: document.getElementById('stats') });
@@ -99,12 +108,18 @@ const actions = {
   box: () => void drop('box'),
   ball: () => void drop('ball'),
   torus: () => void drop('torus'),
+  reset: () => {
+    scene.remove(...bodies);
+    bodies.length = 0;
+    populate();
+  },
   paused: false,
   sliceW: 0,
 };
 gui.add(actions, 'box').name(n === 4 ? 'drop a hyperbox' : 'drop a box');
 gui.add(actions, 'ball').name(n === 4 ? 'drop a hypersphere' : 'drop a ball');
 gui.add(actions, 'torus').name(n === 4 ? 'drop a 4D torus' : 'drop a torus');
+gui.add(actions, 'reset').name('start again');
 gui.add(actions, 'paused').name('pause').onChange((value: boolean) => (demo.paused = value));
 
 linkSwitches({ n, to3: 'Switch to 3D', to4: 'Switch to 4D' });
@@ -112,7 +127,7 @@ linkSwitches({ n, to3: 'Switch to 3D', to4: 'Switch to 4D' });
 // --- the ruler (4D) ---------------------------------------------------------------------------
 if (n === 4) {
   document.getElementById('explain-4')!.hidden = false;
-  const slider = gui.add(actions, 'sliceW', -2.5, 2.5, 0.01).name('sliceW').onChange((w: number) => setSlice(w));
+  const slider = gui.add(actions, 'sliceW', -2.5, 2.5, 0.01).decimals(2).name('sliceW').onChange((w: number) => setSlice(w));
   const setSlice = (w: number): void => {
     scene.sliceW = w;
     scene.refreshSlice();
@@ -121,6 +136,5 @@ if (n === 4) {
   };
   mountRuler(document.getElementById('ruler') as HTMLCanvasElement, scene, bodies, setSlice);
 } else {
-  document.getElementById('explain-3')!.innerHTML =
-    '<p>Boxes, balls and tori fall on a floor: the same engine as in 4D, with n = 3. Its rotors are quaternions here, and <code>mesh.quaternion</code> is three\'s quaternion of the body. Switch to 4D to see the same scene one dimension up.</p>';
+  document.getElementById('explain-3')!.hidden = false;
 }

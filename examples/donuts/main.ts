@@ -46,9 +46,10 @@ function gap(): number {
   return least - 2 * MINOR;
 }
 
-/** True when, both at w = 0, the blue circle passes through the orange one's disc once. */
+/** True when, both at w = 0, the blue circle passes once through the orange one's disc, the tubes apart. */
 function linked(): boolean {
-  return Math.abs(place.w) < 1e-9 && Math.abs(place.x) < MAJOR + MAJOR && Math.abs(Math.abs(place.x) - MAJOR) < MAJOR;
+  // solids that overlap are not a chain link (one would have to be cut)
+  return gap() >= 0 && Math.abs(place.w) < 1e-9 && Math.abs(place.x) < MAJOR + MAJOR && Math.abs(Math.abs(place.x) - MAJOR) < MAJOR;
 }
 
 const status = document.getElementById('status')!;
@@ -65,15 +66,15 @@ const move = (): void => {
 };
 
 const gui = new GUI({ container: document.getElementById('gui')!, title: 'The blue donut' });
-gui.add(place, 'x', -3, 3, 0.01).onChange(move);
-gui.add(place, 'w', -2, 2, 0.01).onChange(move);
+gui.add(place, 'x', -3, 3, 0.01).decimals(2).onChange(() => ((script = []), move()));
+gui.add(place, 'w', -2, 2, 0.01).decimals(2).onChange(() => ((script = []), move()));
 const setSlice = (w: number): void => {
   place.sliceW = w;
   scene.sliceW = w;
   scene.refreshSlice();
   gui.controllersRecursive().forEach((c) => c.updateDisplay());
 };
-gui.add(place, 'sliceW', -1, 1, 0.01).name('sliceW (the flat)').onChange(setSlice);
+gui.add(place, 'sliceW', -1, 1, 0.01).decimals(2).name('sliceW (the flat)').onChange(setSlice);
 
 /** "Link them": lift in w, slide along x to the orange ring's tube, come back to w = 0. */
 let script: { to: { x: number; w: number } }[] = [];
@@ -104,12 +105,14 @@ function advance(frame: number): void {
 let played = false;
 
 window.addEventListener('keydown', (event) => {
+  if (event.target instanceof HTMLInputElement) return; // typing in a slider's box
   const key = event.key.toLowerCase();
   if (key === 'arrowleft') place.x -= 0.05;
   else if (key === 'arrowright') place.x += 0.05;
   else if (key === 'w') place.w += 0.05;
   else if (key === 's') place.w -= 0.05;
   else return;
+  event.preventDefault();
   script = [];
   move();
 });
@@ -120,4 +123,73 @@ move();
 const canvas = document.getElementById('view') as HTMLCanvasElement;
 // the scripted moves advance once per simulated frame (not per animation frame), so a run is the
 // same in either thread
-startDemo(scene, { canvas, eye: [2.4, 3.6, 6.2], target: [1.2, 1.1, 0], stats: document.getElementById('stats'), beforeFrame: (frame) => advance(frame) });
+const demo = startDemo(scene, { canvas, eye: [2.4, 3.6, 6.2], target: [1.2, 1.1, 0], stats: document.getElementById('stats'), beforeFrame: (frame) => advance(frame) });
+
+// --- dragging the blue donut in the picture -----------------------------------------------------
+// A press on the blue cut grabs it (the camera stops orbiting): moving the pointer slides it along
+// x; with Shift held, up and down move it along w instead. Elsewhere the pointer turns the camera.
+const raycaster = new THREE.Raycaster();
+const pointer = new THREE.Vector2();
+const grabPlane = new THREE.Plane();
+const grabbed = { on: false, from: new THREE.Vector3(), x: 0, w: 0 };
+function rayAt(event: PointerEvent): THREE.Ray {
+  const box = canvas.getBoundingClientRect();
+  pointer.set(((event.clientX - box.left) / box.width) * 2 - 1, -((event.clientY - box.top) / box.height) * 2 + 1);
+  raycaster.setFromCamera(pointer, demo.camera);
+  return raycaster.ray;
+}
+canvas.addEventListener(
+  'pointerdown',
+  (event) => {
+    if (!moving.visible) return;
+    rayAt(event);
+    const hit = raycaster.intersectObject(moving, false)[0];
+    if (hit === undefined) return;
+    // a plane through the grabbed point, facing the camera: the pointer moves on it
+    grabPlane.setFromNormalAndCoplanarPoint(demo.camera.getWorldDirection(new THREE.Vector3()), hit.point);
+    grabbed.on = true;
+    grabbed.from.copy(hit.point);
+    grabbed.x = place.x;
+    grabbed.w = place.w;
+    demo.controls.enabled = false;
+    canvas.setPointerCapture(event.pointerId);
+    script = [];
+  },
+  { capture: true },
+);
+canvas.addEventListener('pointermove', (event) => {
+  if (!grabbed.on) return;
+  const at = rayAt(event).intersectPlane(grabPlane, new THREE.Vector3());
+  if (at === null) return;
+  if (event.shiftKey) place.w = grabbed.w + (at.y - grabbed.from.y);
+  else place.x = grabbed.x + (at.x - grabbed.from.x);
+  move();
+});
+const release = (): void => {
+  grabbed.on = false;
+  demo.controls.enabled = true;
+};
+canvas.addEventListener('pointerup', release);
+canvas.addEventListener('pointercancel', release);
+
+// --- each ring's circle, dashed, when the flat misses the ring ----------------------------------
+// The circle a torus is built around, drawn where it is in x, y and z whatever its w: it says
+// where a ring is while the flat does not cut it (its shadow in the flat, not a cut).
+function shadowOf(mesh: HyperTorusMesh, colour: number, plane: 'xy' | 'xz'): THREE.LineLoop {
+  const points: THREE.Vector3[] = [];
+  for (let k = 0; k < 96; k += 1) {
+    const t = (2 * Math.PI * k) / 96;
+    points.push(plane === 'xy' ? new THREE.Vector3(MAJOR * Math.cos(t), MAJOR * Math.sin(t), 0) : new THREE.Vector3(MAJOR * Math.cos(t), 0, MAJOR * Math.sin(t)));
+  }
+  const line = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(points), new THREE.LineDashedMaterial({ color: colour, dashSize: 0.08, gapSize: 0.06 }));
+  line.computeLineDistances();
+  const follow = (): void => {
+    requestAnimationFrame(follow);
+    const x = mesh.getPositionN();
+    line.position.set(x[0]!, x[1]!, x[2]!);
+    line.visible = !mesh.visible;
+  };
+  follow();
+  return line;
+}
+scene.add(shadowOf(fixed, 0xe9a23b, 'xy'), shadowOf(moving, 0x4d96d9, 'xz'));

@@ -26,7 +26,7 @@ const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
 const COLORS = [0x2a9d8f, 0xe9a23b, 0x8e5aa8, 0xe76f51, 0x4d96d9, 0x8ab17d, 0xd1495b, 0x00a6a6];
 
-const rand = seeded(2026);
+let rand = seeded(2026);
 let colour = 0;
 function material(): THREE.Material {
   const m = new THREE.MeshStandardMaterial({ color: COLORS[colour++ % COLORS.length], flatShading: n === 4, side: THREE.DoubleSide });
@@ -90,8 +90,10 @@ function drop(kind: Kind, height = 4 + rand() * 4): Mesh {
 }
 
 
-/** The starting bodies: six boxes, four balls, two tori. */
+/** The starting bodies: six boxes, four balls, two tori (the same at every start). */
 function populate(): void {
+  rand = seeded(2026);
+  colour = 0;
   for (let i = 0; i < 6; i += 1) drop('box', 1 + i * 1.2);
   for (let i = 0; i < 4; i += 1) drop('ball', 2 + i * 1.5);
   drop('torus', 3);

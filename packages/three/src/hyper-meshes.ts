@@ -6,7 +6,6 @@
  * @module
  */
 import * as THREE from 'three';
-import { dims } from '@physin/algebra';
 import type { ShapeDescription } from '@physin/worker';
 import { finite, integer, numbers, positive } from './checks.js';
 import { Mesh } from './mesh.js';
@@ -51,11 +50,12 @@ export abstract class HyperShapeMesh extends Mesh {
   /** @internal Writes the slice by the flat `slice` (n − 3 numbers), M the rotation (n × n). */
   abstract updateSlice(slice: Float64Array, M: Float64Array): void;
 
-  /** @internal A scratch flat of the body's n for `refreshSlice` callers. */
+  /** The position buffer the cut is written into. */
   protected positionsOf(): Float32Array {
     return this.geometry.getAttribute('position').array as Float32Array;
   }
 
+  /** The normal buffer the cut is written into. */
   protected normalsOf(): Float32Array {
     return this.geometry.getAttribute('normal').array as Float32Array;
   }
@@ -304,9 +304,4 @@ function flatten(value: unknown): unknown {
     return out;
   }
   return value;
-}
-
-/** @internal The rotation matrix scratch of n dimensions, for the scene's slicing loop. */
-export function rotationScratch(n: number): { readonly D: ReturnType<typeof dims>; readonly M: Float64Array } {
-  return { D: dims(n), M: new Float64Array(n * n) };
 }

@@ -13,7 +13,6 @@ export interface CutCapacity {
   readonly vertices: number;
 }
 
-const EPS = 1e-12;
 /** (u, v) corners of a cube face, counter-clockwise seen from outside, for a + and a − face. */
 const CORNERS_OUT = [-1, -1, 1, -1, 1, 1, -1, 1] as const;
 const CORNERS_IN = [-1, -1, -1, 1, 1, 1, 1, -1] as const;
@@ -389,9 +388,4 @@ function pseudoAngle(u: number, v: number): number {
   if (s === 0) return 0;
   const t = u / s;
   return v >= 0 ? 1 - t : 3 + t;
-}
-
-/** Whether |x| is small enough to call zero. */
-export function isTiny(x: number): boolean {
-  return Math.abs(x) < EPS;
 }

@@ -55,7 +55,7 @@ function makeWorld(n, params) {
   gravity[1] = -9.81;
   const world = new World({ dimensions: n, gravity, params });
   for (let b = 0; b < BODIES; b += 1) {
-    const shape = b % 4 === 3 ? HyperSphere(r(0.2, 0.6)) : HyperBox(D, Array.from({ length: n }, () => r(0.1, 1)));
+    const shape = b % 4 === 3 ? HyperSphere(D, r(0.2, 0.6)) : HyperBox(D, Array.from({ length: n }, () => r(0.1, 1)));
     world.addBody(
       new Body(D, {
         shape,

@@ -79,7 +79,7 @@ for (let n = 2; n <= 6; n += 1) {
   const shapes = {
     box: HyperBox(D, Array.from({ length: n }, (_, i) => 0.5 + 0.1 * i)),
     cube: HyperBox(D, new Array(n).fill(0.5)),
-    ball: HyperSphere(0.6),
+    ball: HyperSphere(D, 0.6),
     floor: HalfSpace(D, up, 0),
     slope: HalfSpace(D, Array.from({ length: n }, (_, i) => (i === 1 ? 1 : 0.1 * (i + 1))), 0.3),
     mesh: crossPolytope(D, 0.8),

@@ -26,7 +26,7 @@ describe('narrowphase on the engine shapes (4D)', () => {
 
   it('box, ball, torus and cross-polytope mesh resting 0.01 into the floor', () => {
     const box: CollidableShape = { ...HyperBox(D, [0.5, 0.5, 0.5, 0.5]), colliders: boxColliders };
-    const ball: CollidableShape = { ...HyperSphere(0.5), colliders: sphereColliders };
+    const ball: CollidableShape = { ...HyperSphere(D, 0.5), colliders: sphereColliders };
     const torus: CollidableShape = { ...HyperTorus(D, 2, 0.7, [0, 2]), colliders: torusColliders };
     const vertices: number[][] = [];
     for (let i = 0; i < n; i += 1) for (const s of [1, -1]) vertices.push(Array.from({ length: n }, (_, c) => (c === i ? s : 0)));

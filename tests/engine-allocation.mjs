@@ -62,7 +62,7 @@ function makeWorld(n) {
   gravity[1] = -9.81;
   const world = new World({ dimensions: n, gravity });
   for (let b = 0; b < 100; b += 1) {
-    const shape = b % 3 === 2 ? HyperSphere(r(0.2, 0.8)) : HyperBox(D, Array.from({ length: n }, () => r(0.1, 1)));
+    const shape = b % 3 === 2 ? HyperSphere(D, r(0.2, 0.8)) : HyperBox(D, Array.from({ length: n }, () => r(0.1, 1)));
     const type = b % 10 === 9 ? 'kinematic' : b % 10 === 8 ? 'static' : 'dynamic';
     world.addBody(
       new Body(D, {
@@ -96,7 +96,7 @@ function makeStackWorld(n) {
     return p;
   };
   for (let i = 0; i < 9; i += 1) world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: at(0, 0.5 + i) }));
-  for (let i = 0; i < 4; i += 1) world.addBody(new Body(D, { shape: HyperSphere(0.4), mass: 1, position: at(2 + i, 0.4) }));
+  for (let i = 0; i < 4; i += 1) world.addBody(new Body(D, { shape: HyperSphere(D, 0.4), mass: 1, position: at(2 + i, 0.4) }));
   const torus = new Body(D, { shape: HyperTorus(D, 1, 0.25, [0, 2]), mass: 1, position: at(-3, 0.25) });
   world.addBody(torus);
   return world;
@@ -121,7 +121,7 @@ function makeJointWorld(n) {
   const up = new Array(n).fill(0);
   up[1] = 1;
   world.addBody(new Body(D, { shape: HalfSpace(D, up, -20), mass: 0 }));
-  const ball = () => HyperSphere(0.1);
+  const ball = () => HyperSphere(D, 0.1);
   const links = [];
   for (let i = 0; i < 8; i += 1) links.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(i + 0.5, 0) })));
   world.addConstraint(new PointJoint(links[0], null, at(-0.5, 0), at(0, 0)));

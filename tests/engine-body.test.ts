@@ -48,10 +48,10 @@ describe('Body construction', () => {
   it('mass 0 makes a body static; a half-space is static by default; a ball takes the n of D', () => {
     for (const n of [2, 3, 4, 5, 6]) {
       const D = dims(n);
-      const ball = new Body(D, { shape: HyperSphere(0.5), mass: 2 });
+      const ball = new Body(D, { shape: HyperSphere(D, 0.5), mass: 2 });
       // n-ball: C_ii = m ρ²/(n+2), I = 2 C_ii.
       for (let p = 0; p < D.k; p += 1) expect(Math.abs(ball.inertia[p]! - (2 * 2 * 0.25) / (n + 2))).toBeLessThan(1e-15);
-      expect(new Body(D, { shape: HyperSphere(0.5), mass: 0 }).type).toBe('static');
+      expect(new Body(D, { shape: HyperSphere(D, 0.5), mass: 0 }).type).toBe('static');
       const normal = new Array(n).fill(0);
       normal[1] = 1;
       expect(new Body(D, { shape: HalfSpace(D, normal, 0) }).type).toBe('static');

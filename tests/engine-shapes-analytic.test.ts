@@ -52,12 +52,12 @@ describe('HyperSphere', () => {
   it('has volume V_n(ρ) and C_ii = mρ²/(n+2), I_(ij) = 2mρ²/(n+2) for n = 2..6 (1e-14 relative)', () => {
     const rho = 1.3;
     const m = 2.5;
-    const ball = HyperSphere(rho);
-    expect(ball.kind).toBe('sphere');
-    expect(ball.n).toBeNull();
-    expect(Object.isFrozen(ball)).toBe(true);
     for (const n of NS) {
       const D = dims(n);
+      const ball = HyperSphere(D, rho);
+      expect(ball.kind).toBe('sphere');
+      expect(ball.n).toBe(n);
+      expect(Object.isFrozen(ball)).toBe(true);
       const mp = ball.massProperties(D, m);
       expectRel(mp.volume, ballVolumeByRecurrence(n) * rho ** n, 1e-14);
       expect(mp.covariance.length).toBe(n);
@@ -77,21 +77,24 @@ describe('HyperSphere', () => {
         sum += r * r * n * r ** (n - 1) * (rho / steps);
       }
       const perAxis = sum / rho ** n / n;
-      const mp = HyperSphere(rho).massProperties(dims(n), 1);
+      const mp = HyperSphere(dims(n), rho).massProperties(dims(n), 1);
       expectRel(mp.covariance[0], perAxis, 1e-8);
     }
   });
 
   it('refuses a bad radius and bad massProperties arguments', () => {
-    expect(() => HyperSphere(0)).toThrow(RangeError);
-    expect(() => HyperSphere(-1)).toThrow(/'radius' must be > 0/);
-    expect(() => HyperSphere(Number.NaN)).toThrow(RangeError);
-    expect(() => HyperSphere(Number.POSITIVE_INFINITY)).toThrow(RangeError);
-    expect(() => HyperSphere('1' as unknown as number)).toThrow(TypeError);
-    const ball = HyperSphere(1);
+    const D = dims(3);
+    expect(() => HyperSphere(D, 0)).toThrow(RangeError);
+    expect(() => HyperSphere(D, -1)).toThrow(/'radius' must be > 0/);
+    expect(() => HyperSphere(D, Number.NaN)).toThrow(RangeError);
+    expect(() => HyperSphere(D, Number.POSITIVE_INFINITY)).toThrow(RangeError);
+    expect(() => HyperSphere(D, '1' as unknown as number)).toThrow(TypeError);
+    const ball = HyperSphere(D, 1);
     expect(() => ball.massProperties(dims(3), 0)).toThrow(/'mass' must be > 0/);
     expect(() => ball.massProperties(dims(3), Number.NaN)).toThrow(RangeError);
     expect(() => ball.massProperties({ n: 3 } as never, 1)).toThrow(TypeError);
+    expect(() => ball.massProperties(dims(4), 1)).toThrow(/built for n = 3/);
+    expect(() => HyperSphere({ n: 3 } as never, 1)).toThrow(/argument 'D'/);
   });
 });
 

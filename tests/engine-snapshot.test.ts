@@ -116,7 +116,7 @@ function richScene(n: number): Scene {
     const rotor = new Float64Array(D.r);
     rotor[0] = 1;
     const w = Array.from({ length: D.k }, () => uniform(rand, -2, 2));
-    const shape = i % 2 === 0 ? HyperBox(D, Array.from({ length: n }, () => uniform(rand, 0.15, 0.35))) : HyperSphere(uniform(rand, 0.15, 0.3));
+    const shape = i % 2 === 0 ? HyperBox(D, Array.from({ length: n }, () => uniform(rand, 0.15, 0.35))) : HyperSphere(D, uniform(rand, 0.15, 0.3));
     world.addBody(
       new Body(D, {
         shape,
@@ -136,9 +136,9 @@ function richScene(n: number): Scene {
   world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.3)), type: 'kinematic', mass: 0, position: at(6, 0.3, 0), velocity: at(-0.5) }));
 
   // Joints: a soft point joint with a rope to a second ball.
-  const bob = world.addBody(new Body(D, { shape: HyperSphere(0.15), mass: 1, position: at(-4, 3, 0), velocity: at(0, 0, 1) }));
+  const bob = world.addBody(new Body(D, { shape: HyperSphere(D, 0.15), mass: 1, position: at(-4, 3, 0), velocity: at(0, 0, 1) }));
   world.addConstraint(new PointJoint(bob, null, at(0, 0.5), at(-4, 3.5, 0), { hertz: 4, damping: 0.3 }));
-  const bob2 = world.addBody(new Body(D, { shape: HyperSphere(0.1), mass: 0.5, position: at(-4.5, 2.2, 0) }));
+  const bob2 = world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 0.5, position: at(-4.5, 2.2, 0) }));
   world.addConstraint(new DistanceJoint(bob, bob2, at(), at(), { mode: 'rope', rest: 0.9 }));
   // A rod from the second ball to a box, which lies on the ground.
   const rodBox = world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.15)), mass: 1, position: at(-4.5, 0.6, 0.4) }));
@@ -225,7 +225,7 @@ describe('snapshot and restore: free bodies and a simple contact, n = 2 and 5', 
         p[1] = 0.6 + 0.9 * i;
         world.addBody(
           new Body(D, {
-            shape: i % 2 === 0 ? HyperBox(D, new Array<number>(n).fill(0.25)) : HyperSphere(0.3),
+            shape: i % 2 === 0 ? HyperBox(D, new Array<number>(n).fill(0.25)) : HyperSphere(D, 0.3),
             mass: 1 + i,
             position: p,
             angularVelocity: Array.from({ length: D.k }, () => uniform(rand, -3, 3)),
@@ -291,7 +291,7 @@ describe('snapshot is read-only and restore keeps the order', () => {
       expectSameBytes(copy.snapshot(), empty.snapshot(), `empty n = ${n}`);
       const D = empty.D;
       empty.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0 }));
-      empty.addBody(new Body(D, { shape: HyperSphere(1), mass: 0, position: axis(n, 0, 3) }));
+      empty.addBody(new Body(D, { shape: HyperSphere(D, 1), mass: 0, position: axis(n, 0, 3) }));
       const statics = World.restore(empty.snapshot());
       expectSameContinuation(empty, statics, 10, `static bodies n = ${n}`);
       expectSameBytes(statics.snapshot(), empty.snapshot(), `static bodies n = ${n}`);
@@ -452,7 +452,7 @@ describe('snapshot at every step of a bounce', () => {
     const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: true } });
     const D = world.D;
     world.addBody(new Body(D, { shape: HalfSpace(D, axis(3, 1), 0), mass: 0, material: { restitution: 0.9 } }));
-    world.addBody(new Body(D, { shape: HyperSphere(0.2), mass: 1, position: [0, 1.5, 0], velocity: [0.3, -6, 0], material: { restitution: 0.9, friction: 0.4 }, angularVelocity: [0, 2, 1] }));
+    world.addBody(new Body(D, { shape: HyperSphere(D, 0.2), mass: 1, position: [0, 1.5, 0], velocity: [0.3, -6, 0], material: { restitution: 0.9, friction: 0.4 }, angularVelocity: [0, 2, 1] }));
     world.addBody(new Body(D, { shape: HyperBox(D, [0.2, 0.2, 0.2]), mass: 1, position: [1.5, 1.2, 0], velocity: [0, -8, 0], material: { restitution: 0.7 } }));
     const AHEAD = 3;
     const states: Float64Array[] = [];
@@ -613,7 +613,7 @@ describe('snapshot refuses what it cannot rebuild', () => {
   it('a joint class it does not know is named (a subclass would come back as its base class)', () => {
     const world = new World({ dimensions: 3 });
     const D = world.D;
-    const a = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1 }));
+    const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1 }));
     class TetherJoint extends PointJoint {}
     world.addConstraint(new TetherJoint(a, null, [0, 0, 0], [0, 1, 0]));
     expect(() => world.snapshot()).toThrow(/a joint of type TetherJoint is not supported/);

@@ -26,7 +26,7 @@ function spinningWorld(n: number, count: number): World {
   gravity[1] = -9.81;
   const world = new World({ dimensions: n, gravity });
   for (let b = 0; b < count; b += 1) {
-    const shape = b % 2 === 0 ? HyperBox(D, Array.from(randomArray(rand, n, 0.2, 1))) : HyperSphere(0.4);
+    const shape = b % 2 === 0 ? HyperBox(D, Array.from(randomArray(rand, n, 0.2, 1))) : HyperSphere(D, 0.4);
     world.addBody(
       new Body(D, { shape, mass: 1 + b, position: randomArray(rand, n, -5, 5), velocity: randomArray(rand, n), angularVelocity: randomArray(rand, D.k, -3, 3), name: `b${b}` }),
     );
@@ -99,7 +99,7 @@ describe('bodies in the world', () => {
     const D = dims(3);
     const a = new World({ dimensions: 3 });
     const b = new World({ dimensions: 3 });
-    const bodies = [0, 1, 2].map(() => new Body(D, { shape: HyperSphere(1) }));
+    const bodies = [0, 1, 2].map(() => new Body(D, { shape: HyperSphere(D, 1) }));
     for (const body of bodies) a.addBody(body);
     expect(a.bodies).toEqual(bodies);
     expect(Object.isFrozen(a.bodies)).toBe(true);
@@ -113,10 +113,10 @@ describe('bodies in the world', () => {
     const D = dims(3);
     const world = new World({ dimensions: 3 });
     const other = new World({ dimensions: 3 });
-    const body = world.addBody(new Body(D, { shape: HyperSphere(1) }));
+    const body = world.addBody(new Body(D, { shape: HyperSphere(D, 1) }));
     expect(() => world.addBody(body)).toThrow(/already in this world/);
     expect(() => other.addBody(body)).toThrow(/another world/);
-    expect(() => world.addBody(new Body(dims(4), { shape: HyperSphere(1) }))).toThrow(/n = 4/);
+    expect(() => world.addBody(new Body(dims(4), { shape: HyperSphere(dims(4), 1) }))).toThrow(/n = 4/);
     expect(() => world.addBody({} as Body)).toThrow(TypeError);
     expect(() => other.removeBody(body)).toThrow(/not in this world/);
     expect(() => world.removeBody(null as unknown as Body)).toThrow(TypeError);
@@ -157,8 +157,8 @@ describe('bad input leaves the world exactly as it was', () => {
     ['setParams with one bad entry', (w) => w.setParams({ iterations: 4, rotorTolerance: -1 }), 'RangeError', /'rotorTolerance'/],
     ['setParams with an unknown name', (w) => w.setParams({ iterations: 4, substeps: 2 } as never), 'RangeError', /'substeps'/],
     ['addBody twice', (w, b) => w.addBody(b), 'RangeError', /'body'/],
-    ['addBody of another n', (w) => w.addBody(new Body(dims(3), { shape: HyperSphere(1) })), 'RangeError', /'body'/],
-    ['removeBody not in the world', (w) => w.removeBody(new Body(D, { shape: HyperSphere(1) })), 'RangeError', /'body'/],
+    ['addBody of another n', (w) => w.addBody(new Body(dims(3), { shape: HyperSphere(dims(3), 1) })), 'RangeError', /'body'/],
+    ['removeBody not in the world', (w) => w.removeBody(new Body(D, { shape: HyperSphere(D, 1) })), 'RangeError', /'body'/],
     ['setLinearVelocity of length 3', (_w, b) => b.setLinearVelocity([1, 2, 3]), 'TypeError', /'v'/],
     ['setAngularVelocity with Infinity', (_w, b) => b.setAngularVelocity([0, 0, 0, 0, 0, Infinity]), 'RangeError', /'w'/],
     ['setPositionN with NaN', (_w, b) => b.setPositionN([0, NaN, 0, 0]), 'RangeError', /'p'/],
@@ -173,12 +173,12 @@ describe('bad input leaves the world exactly as it was', () => {
     ['applyForce with an arm of length 5', (_w, b) => b.applyForce([1, 0, 0, 0], [0, 0, 0, 0, 1]), 'TypeError', /'r'/],
     ['addBody of a body that belongs to another world', (w) => {
       const other = new World({ dimensions: 4 });
-      w.addBody(other.addBody(new Body(D, { shape: HyperSphere(1) })));
+      w.addBody(other.addBody(new Body(D, { shape: HyperSphere(D, 1) })));
     }, 'RangeError', /another world/],
     // Building a body or a shape with bad arguments throws before anything reaches the world.
-    ['new Body with a negative mass', () => new Body(D, { shape: HyperSphere(1), mass: -1 }), 'RangeError', /'mass'/],
-    ['new Body with a position of length 3', () => new Body(D, { shape: HyperSphere(1), position: [0, 1, 0] }), 'TypeError', /'position'/],
-    ['new Body with a non-finite velocity', () => new Body(D, { shape: HyperSphere(1), velocity: [0, NaN, 0, 0] }), 'RangeError', /'velocity'/],
+    ['new Body with a negative mass', () => new Body(D, { shape: HyperSphere(D, 1), mass: -1 }), 'RangeError', /'mass'/],
+    ['new Body with a position of length 3', () => new Body(D, { shape: HyperSphere(D, 1), position: [0, 1, 0] }), 'TypeError', /'position'/],
+    ['new Body with a non-finite velocity', () => new Body(D, { shape: HyperSphere(D, 1), velocity: [0, NaN, 0, 0] }), 'RangeError', /'velocity'/],
     ['new Body with a 3D box in a 4D world', () => new Body(D, { shape: HyperBox(dims(3), [1, 1, 1]) }), 'RangeError', /'shape'/],
     ['HyperBox with a negative half-extent', () => HyperBox(D, [0.5, -0.5, 0.5, 0.5]), 'RangeError', /'halfExtents'/],
     ['HyperTorus with minor radius >= major radius', () => HyperTorus(D, 1, 1, 0), 'RangeError', /'minorRadius'/],

@@ -33,7 +33,7 @@ function run(world: { step(dt: number): unknown }, steps: number, each?: () => v
 
 function hangingBall(breakForce: number) {
   const world = makeWorld(3);
-  const body = world.addBody(new Body(world.D, { shape: HyperSphere(0.1), mass: 1, position: [0, 0, 0] }));
+  const body = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position: [0, 0, 0] }));
   const joint = world.addConstraint(new PointJoint(body, null, [0, 0, 0], [0, 0, 0], { breakForce }));
   return { world, body, joint };
 }

@@ -20,12 +20,12 @@ function drop(n: number, collideConnected: boolean | undefined) {
   const box = world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.5)), mass: 0, name: 'box' }));
   const p1 = [...zero];
   p1[1] = 2;
-  const ball = world.addBody(new Body(D, { shape: HyperSphere(0.2), mass: 1, position: p1, name: 'tied' }));
+  const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.2), mass: 1, position: p1, name: 'tied' }));
   const p2 = [...zero];
   p2[1] = 2;
   p2[0] = 0.3;
   p2[2] = 0.3;
-  const other = world.addBody(new Body(D, { shape: HyperSphere(0.1), mass: 1, position: p2, name: 'free' }));
+  const other = world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 1, position: p2, name: 'free' }));
   const opts = collideConnected === undefined ? { rest: 3, mode: 'rope' as const } : { rest: 3, mode: 'rope' as const, collideConnected };
   const joint = world.addConstraint(new DistanceJoint(ball, box, zero, zero, opts));
   for (let s = 0; s < 180; s += 1) world.step(1 / 60);

@@ -21,7 +21,7 @@ type Mode = 'rod' | 'rope' | 'strut';
 /** Runs the ball from `position` with `velocity` on a joint of the given mode; returns the length range. */
 function swing(n: number, mode: Mode, position: number[], velocity: number[], seconds = 3) {
   const world = makeWorld(n);
-  const body = world.addBody(new Body(world.D, { shape: HyperSphere(0.1), mass: 1, position, velocity }));
+  const body = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position, velocity }));
   const zero = new Array<number>(n).fill(0);
   world.addConstraint(new DistanceJoint(body, null, zero, zero, { rest: 1, mode }));
   let min = Infinity;

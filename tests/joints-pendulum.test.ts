@@ -45,7 +45,7 @@ function swing(n: number, side: number, bob: 'ball' | 'box', seed: number): Swin
   let shape;
   if (bob === 'ball') {
     const rho = 0.05;
-    shape = HyperSphere(rho);
+    shape = HyperSphere(D, rho);
     Icm = (2 * m * rho * rho) / (n + 2);
   } else {
     const half = new Array<number>(n).fill(0.1);

@@ -21,7 +21,7 @@ const EXPECTED = G / (2 * Math.PI * 5) ** 2; // 9.9396e-3 m
 
 function hang(n: number, dt: number, damping: number, seconds = 5) {
   const world = makeWorld(n);
-  const body = world.addBody(new Body(world.D, { shape: HyperSphere(0.1), mass: 1, position: new Array<number>(n).fill(0) }));
+  const body = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position: new Array<number>(n).fill(0) }));
   const zero = new Array<number>(n).fill(0);
   const joint = world.addConstraint(new PointJoint(body, null, zero, zero, { hertz: 5, damping }));
   const steps = Math.round(seconds / dt);
@@ -68,7 +68,7 @@ describe('identity 24: a soft joint of f Hz holding m hangs g/(2πf)² low (5 Hz
 
   it('setSoftness(5, 1) on a rigid joint makes it hang 9.94 mm (1 %) low; setSoftness(0, 1) makes it rigid again (sag ≤ constraintSlop + 1e-6: the error a rigid joint accepts)', () => {
     const world = makeWorld(3);
-    const body = world.addBody(new Body(world.D, { shape: HyperSphere(0.1), mass: 1, position: [0, 0, 0] }));
+    const body = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position: [0, 0, 0] }));
     const joint = world.addConstraint(new PointJoint(body, null, [0, 0, 0], [0, 0, 0]));
     let rigidSag = 0;
     for (let s = 0; s < 120; s += 1) {

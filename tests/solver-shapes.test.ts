@@ -177,7 +177,7 @@ describe('torus on the ground (test plan 9)', () => {
       const H0 = 2;
       world.addBody(new Body(D, { shape: HyperTorus(D, R, r, [0, 2]), mass: 0, position: at(n, { 1: H0 }), name: 'ring' }));
       const y0 = H0 + 1.5;
-      const ball = world.addBody(new Body(D, { shape: HyperSphere(0.3), mass: 1, position: at(n, { 1: y0 }) }));
+      const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.3), mass: 1, position: at(n, { 1: y0 }) }));
       let begins = 0;
       const steps = 60;
       for (let i = 0; i < steps; i += 1) {
@@ -200,7 +200,7 @@ describe('torus on the ground (test plan 9)', () => {
       const rho = 0.2;
       world.addBody(new Body(D, { shape: HyperTorus(D, R, r, [0, 2]), mass: 0, position: at(n, { 1: H0 }), material: { friction: 0.6, restitution: 0 } }));
       const ball = world.addBody(
-        new Body(D, { shape: HyperSphere(rho), mass: 1, position: at(n, { 0: R, 1: H0 + r + rho + 0.5 }), material: { friction: 0.6, restitution: 0 } }),
+        new Body(D, { shape: HyperSphere(D, rho), mass: 1, position: at(n, { 0: R, 1: H0 + r + rho + 0.5 }), material: { friction: 0.6, restitution: 0 } }),
       );
       run(world, 3);
       expect(Math.abs(ball.x[1]! - (H0 + r + rho))).toBeLessThanOrEqual(SLOP + 1e-3);
@@ -300,7 +300,7 @@ describe('convex mesh on the ground and against a ball (test plan 10)', () => {
       const q = Array.from(bary, (b) => (s * b) / total); // Σ q = s, all > 0: interior of the facet
       const gap = 0.0005;
       const c0 = q.map((qi, i) => qi + (rho + gap) * N[i]!);
-      const ball = world.addBody(new Body(D, { shape: HyperSphere(rho), mass: 1, position: c0, name: 'ball' }));
+      const ball = world.addBody(new Body(D, { shape: HyperSphere(D, rho), mass: 1, position: c0, name: 'ball' }));
       let found = false;
       let prev = Float64Array.from(ball.x);
       for (let i = 0; i < 30 && !found; i += 1) {
@@ -345,7 +345,7 @@ function pile(n: number, seed: number, count: number): World {
     position[1] = 0.6 + 0.55 * i;
     let shape: Shape;
     if (i % 2 === 0) shape = HyperBox(D, Array.from(randomArray(rand, n, 0.15, 0.3)));
-    else shape = HyperSphere(uniform(rand, 0.15, 0.3));
+    else shape = HyperSphere(D, uniform(rand, 0.15, 0.3));
     const b = new Body(D, {
       shape,
       mass: uniform(rand, 0.5, 2),

@@ -232,7 +232,7 @@ describe('collision events', () => {
       const rho = 0.3;
       const x0 = at(n, { 0: 0.4, 1: 1.5 });
       if (n > 2) x0[2] = -0.2;
-      const ball = world.addBody(new Body(D, { shape: HyperSphere(rho), mass: 2, position: x0, material: { friction: 0.5, restitution: 0.8 }, name: 'ball' }));
+      const ball = world.addBody(new Body(D, { shape: HyperSphere(D, rho), mass: 2, position: x0, material: { friction: 0.5, restitution: 0.8 }, name: 'ball' }));
       const begins: { step: number; A: Body; B: Body; point: number[]; normal: number[]; impulse: number }[] = [];
       const ends: { step: number; A: Body; B: Body }[] = [];
       for (let i = 0; i < 120; i += 1) {
@@ -281,7 +281,7 @@ describe('collision events', () => {
     const n = 3;
     const { world, ground } = makeWorld(n, { allowSleep: false });
     const D = world.D;
-    const ball = world.addBody(new Body(D, { shape: HyperSphere(0.3), mass: 1, position: [0.1, 1.2, 0.2], material: { friction: 0.5, restitution: 0.9 }, name: 'ball' }));
+    const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.3), mass: 1, position: [0.1, 1.2, 0.2], material: { friction: 0.5, restitution: 0.9 }, name: 'ball' }));
     const box = world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.25, 0.5]), mass: 1, position: [5, 0.26, 0], material: { friction: 0.5, restitution: 0 }, name: 'box' }));
     const seenBall: Seen[] = [];
     const seenGround: Seen[] = [];
@@ -356,8 +356,8 @@ describe('collision events', () => {
     const n = 4;
     const D = dims(n);
     const world = new World({ dimensions: n, params: { allowSleep: false } });
-    const a = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1, position: [-1, 0, 0, 0], velocity: [2, 0, 0, 0], material: { restitution: 1 }, name: 'a' }));
-    const b = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1, position: [1, 0, 0, 0], velocity: [-2, 0, 0, 0], material: { restitution: 1 }, name: 'b' }));
+    const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [-1, 0, 0, 0], velocity: [2, 0, 0, 0], material: { restitution: 1 }, name: 'a' }));
+    const b = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [1, 0, 0, 0], velocity: [-2, 0, 0, 0], material: { restitution: 1 }, name: 'b' }));
     const got: Seen[] = [];
     const listener = (e: CollisionEvent): void => {
       got.push({ type: e.type, body: e.body, other: e.other, point: Array.from(e.point), normal: Array.from(e.normal), impulse: e.impulse, step: 0 });
@@ -387,8 +387,8 @@ describe('collision events', () => {
     const speeds: number[] = [];
     for (const start of [1.0, 1.01, 1.03, 1.05, 1.065]) {
       const world = new World({ dimensions: n, params: { allowSleep: false } });
-      const a = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1, position: [-start, 0, 0], velocity: [2, 0, 0], material: { restitution: 1 } }));
-      const b = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1, position: [start, 0, 0], velocity: [-2, 0, 0], material: { restitution: 1 } }));
+      const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [-start, 0, 0], velocity: [2, 0, 0], material: { restitution: 1 } }));
+      const b = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [start, 0, 0], velocity: [-2, 0, 0], material: { restitution: 1 } }));
       run(world, 1);
       // momentum is conserved in every case
       expect(Math.abs(a.v[0]! + b.v[0]!)).toBeLessThanOrEqual(1e-9);
@@ -403,7 +403,7 @@ describe('collision events', () => {
     for (const drop of [1.2, 1.22, 1.25, 1.3]) {
       const { world } = makeWorld(3, { allowSleep: false });
       const rho = 0.3;
-      const ball = world.addBody(new Body(world.D, { shape: HyperSphere(rho), mass: 2, position: [0, drop + rho, 0], material: { friction: 0.5, restitution: 0.8 } }));
+      const ball = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, rho), mass: 2, position: [0, drop + rho, 0], material: { friction: 0.5, restitution: 0.8 } }));
       let up = false;
       let top = -Infinity;
       for (let i = 0; i < 90; i += 1) {

@@ -149,7 +149,7 @@ describe('world.rayCast against each shape (analytic hits)', () => {
           N = dirToWorld(body, nl);
         } else if (kind === 1) {
           const rho = uniform(rand, 0.2, 1.5);
-          body = world.addBody(new Body(D, { shape: HyperSphere(rho), mass: 1, position: x }));
+          body = world.addBody(new Body(D, { shape: HyperSphere(D, rho), mass: 1, position: x }));
           N = randomUnitVector(rand, n);
           p = axpy(x, rho, N);
         } else if (kind === 2) {
@@ -259,7 +259,7 @@ describe('world.rayCast over several bodies', () => {
       for (let i = 0; i < 8; i += 1) {
         const along = 2 + 3 * i + uniform(rand, 0, 1);
         const rho = uniform(rand, 0.3, 0.8);
-        const body = new Body(D, { shape: HyperSphere(rho), mass: 1, position: axpy(origin, along, dir) });
+        const body = new Body(D, { shape: HyperSphere(D, rho), mass: 1, position: axpy(origin, along, dir) });
         balls.push({ body, t: along - rho, rho });
       }
       // insert in a scrambled order so the nearest is not the first added
@@ -301,7 +301,7 @@ describe('world.rayCast over several bodies', () => {
       const world = new World({ dimensions: n, gravity: g, params: { allowSleep: false } });
       const pos = new Array<number>(n).fill(0);
       pos[1] = 10;
-      const ball = world.addBody(new Body(D, { shape: HyperSphere(0.5), mass: 1, position: pos }));
+      const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: pos }));
       const box = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: pos.map((c, k) => (k === 0 ? 5 : c)) }));
       const down = new Array<number>(n).fill(0);
       down[1] = -1;
@@ -423,7 +423,7 @@ function randomScene(n: number, seed: number, count: number): World {
     let body: Body;
     switch (i % 5) {
       case 0:
-        body = new Body(D, { shape: HyperSphere(uniform(rand, 0.2, 0.8)), mass: 1, position: x });
+        body = new Body(D, { shape: HyperSphere(D, uniform(rand, 0.2, 0.8)), mass: 1, position: x });
         break;
       case 1:
         body = new Body(D, { shape: HyperBox(D, randomArray(rand, n, 0.2, 0.8)), mass: 1, position: x });

@@ -99,7 +99,7 @@ export function physinChain({ n = 3, count = 10, start = 'horizontal', params = 
     n,
     params,
     (D) => {
-      const shape = HyperSphere(LINK_RADIUS);
+      const shape = HyperSphere(D, LINK_RADIUS);
       const rotor = start === 'hanging' ? rotorFromPlane(D, new Float64Array(D.r), 0, 1, -Math.PI / 2) : undefined;
       return positions.map((position, i) => new Body(D, { shape, mass: 1, position, ...(rotor ? { rotor } : {}), name: `link${i}` }));
     },
@@ -139,7 +139,7 @@ export function physinGrid({ side = 20, params = {} } = {}) {
     n,
     params,
     (D) => {
-      const shape = HyperSphere(BALL_RADIUS);
+      const shape = HyperSphere(D, BALL_RADIUS);
       const out = [];
       for (let row = 0; row < side; row += 1) for (let col = 0; col < side; col += 1) out.push(new Body(D, { shape, mass: 1, position: gridPosition(row, col, n) }));
       return out;

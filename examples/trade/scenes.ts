@@ -138,7 +138,7 @@ function stack(params: Partial<Params>, n: 3 | 4, count: number): TradeScene {
 function chain(params: Partial<Params>, ratio: number): TradeScene {
   const D = dims(3);
   const world = new World({ dimensions: 3, gravity: gravity(3), params });
-  const shape = HyperSphere(0.1);
+  const shape = HyperSphere(D, 0.1);
   const links: Body[] = [];
   const joints: PointJoint[] = [];
   for (let i = 0; i < 10; i += 1) {

@@ -127,7 +127,7 @@ export function buildChain(options: ChainOptions): Chain {
   const count = options.count ?? 10;
   const world = makeWorld(n, options.params ?? {});
   const D = world.D;
-  const shape = HyperSphere(LINK_RADIUS);
+  const shape = HyperSphere(D, LINK_RADIUS);
   const start = new Array<number>(n).fill(0);
   start[0] = -LINK_HALF_LENGTH;
   const end = new Array<number>(n).fill(0);

@@ -39,7 +39,7 @@ export function buildShape(D: Dims, desc: ShapeDescription, where: string): Shap
     case 'box':
       return HyperBox(D, desc.halfExtents);
     case 'sphere':
-      return HyperSphere(desc.radius);
+      return HyperSphere(D, desc.radius);
     case 'halfspace':
       return HalfSpace(D, desc.normal, desc.offset);
     case 'torus':

@@ -84,7 +84,7 @@ function factory<F>(kind: string, name: string): F {
  */
 const REBUILD: Readonly<Record<string, (D: Dims, f: Fields, r: SnapshotReader) => Shape>> = {
   box: (D, f, r) => factory<typeof HyperBox>('box', 'HyperBox')(D, f64(r, f, 'halfExtents')),
-  sphere: (_D, f, r) => factory<typeof HyperSphere>('sphere', 'HyperSphere')(num(r, f, 'radius')),
+  sphere: (D, f, r) => factory<typeof HyperSphere>('sphere', 'HyperSphere')(D, num(r, f, 'radius')),
   halfspace: (D, f, r) => factory<typeof HalfSpace>('halfspace', 'HalfSpace')(D, f64(r, f, 'normal'), num(r, f, 'offset')),
   torus: (D, f, r) =>
     factory<typeof HyperTorus>('torus', 'HyperTorus')(D, num(r, f, 'majorRadius'), num(r, f, 'minorRadius'), num(r, f, 'plane')),

@@ -16,7 +16,8 @@ import { fileURLToPath } from 'node:url';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '../..');
-const packs = join(root, 'packs');
+// its own temporary pack folder: tests/consumers/apps.test.ts packs at the same time
+const packs = mkdtempSync(join(tmpdir(), 'physin-packs-node-'));
 const tsc = join(root, 'node_modules/typescript/bin/tsc');
 const folders: string[] = [];
 
@@ -35,10 +36,11 @@ function folder(): string {
 }
 
 beforeAll(() => {
-  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build'], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build', '--out', packs], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
 }, 300_000);
 
 afterAll(() => {
+  rmSync(packs, { recursive: true, force: true });
   for (const dir of folders) rmSync(dir, { recursive: true, force: true });
 });
 

@@ -61,10 +61,22 @@ function folder(prefix: string): string {
 function appFolder(kind: 'vite' | 'webpack'): string {
   const dir = folder(`physin-${kind}-app-`);
   writeFileSync(join(dir, 'package.json'), JSON.stringify({ name: `physin-${kind}-app`, private: true, type: 'module' }));
-  execFileSync('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error', ...TARBALLS.map((t) => join(packs, t)), 'three@0.187.0'], {
-    cwd: dir,
-    stdio: ['ignore', 'ignore', 'inherit'],
-  });
+  execFileSync(
+    'npm',
+    [
+      'install',
+      '--no-audit',
+      '--no-fund',
+      '--prefer-offline',
+      '--loglevel=error',
+      ...TARBALLS.map((t) => join(packs, t)),
+      'three@0.187.0',
+    ],
+    {
+      cwd: dir,
+      stdio: ['ignore', 'ignore', 'inherit'],
+    },
+  );
   expect(readdirSync(join(dir, 'node_modules/@physin')).sort()).toEqual(['algebra', 'engine', 'three', 'worker']);
   copyFileSync(join(apps, 'main.js'), join(dir, 'main.js'));
   for (const file of readdirSync(join(apps, kind))) copyFileSync(join(apps, kind, file), join(dir, file));
@@ -78,7 +90,10 @@ function foreign(dir: string, ids: string[]): string[] {
 
 beforeAll(() => {
   packs = folder('physin-packs-apps-');
-  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build', '--out', packs], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build', '--out', packs], {
+    cwd: root,
+    stdio: ['ignore', 'ignore', 'inherit'],
+  });
 }, 120_000);
 
 afterAll(() => {
@@ -89,9 +104,19 @@ describe('web apps built from the tarballs', () => {
   it('a Vite app installs and builds, bundling only what npm installed', async () => {
     const dir = appFolder('vite');
     const vite = (await import(pathToFileURL(join(root, 'examples/node_modules/vite/dist/node/index.js')).href)) as {
-      build(config: object): Promise<{ output: { type: string; fileName: string; moduleIds?: string[] }[] } | { output: { type: string; fileName: string; moduleIds?: string[] }[] }[]>;
+      build(
+        config: object,
+      ): Promise<
+        | { output: { type: string; fileName: string; moduleIds?: string[] }[] }
+        | { output: { type: string; fileName: string; moduleIds?: string[] }[] }[]
+      >;
     };
-    const result = await vite.build({ root: dir, configFile: false, logLevel: 'warn', build: { outDir: join(dir, 'dist'), emptyOutDir: true, chunkSizeWarningLimit: 4096 } });
+    const result = await vite.build({
+      root: dir,
+      configFile: false,
+      logLevel: 'warn',
+      build: { outDir: join(dir, 'dist'), emptyOutDir: true, chunkSizeWarningLimit: 4096 },
+    });
     const output = (Array.isArray(result) ? result : [result]).flatMap((r) => r.output);
     const ids = output.flatMap((o) => (o.type === 'chunk' ? (o.moduleIds ?? []) : []));
     expect(ids.some((id) => id.startsWith(join(dir, 'node_modules/@physin/three/dist') + sep))).toBe(true);
@@ -101,23 +126,28 @@ describe('web apps built from the tarballs', () => {
     expect(output.some((o) => /(^|\/)worker-[\w-]+\.js$/.test(o.fileName))).toBe(true);
     expect(existsSync(join(dir, 'dist/index.html'))).toBe(true);
     sites.vite = join(dir, 'dist');
-  }, 90_000);
+  }, 120_000);
 
   it('a webpack 5 app installs and builds, bundling only what npm installed', async () => {
     const dir = appFolder('webpack');
     const config = createRequire(join(dir, 'package.json'))(join(dir, 'webpack.config.cjs')) as Configuration;
     const stats = await new Promise<Stats>((resolve, reject) =>
-      webpack(config, (error, result) => (error || !result ? reject(error ?? new Error('webpack gave no stats')) : resolve(result))),
+      webpack(config, (error, result) =>
+        error || !result ? reject(error ?? new Error('webpack gave no stats')) : resolve(result),
+      ),
     );
     const json = stats.toJson({ all: false, errors: true, warnings: true, modules: true, nestedModules: true, assets: true });
     expect(json.errors ?? []).toEqual([]);
     expect(json.warnings ?? []).toEqual([]);
-    const files = (json.modules ?? []).flatMap((m) => [m, ...(m.modules ?? [])]).flatMap((m) => (m.nameForCondition ? [m.nameForCondition] : []));
+    const files = (json.modules ?? [])
+      .flatMap((m) => [m, ...(m.modules ?? [])])
+      .flatMap((m) => (m.nameForCondition ? [m.nameForCondition] : []));
     expect(files.some((f) => f.startsWith(join(dir, 'node_modules/@physin/worker/dist') + sep))).toBe(true);
     expect(foreign(dir, files)).toEqual([]);
     copyFileSync(join(dir, 'index.html'), join(dir, 'dist/index.html'));
     sites.webpack = join(dir, 'dist');
-  }, 90_000);
+    // minifying three takes most of it: ~12 s alone, ~25 s beside the other consumer tests
+  }, 180_000);
 });
 
 describe.runIf(present)('the built apps in Chromium', () => {
@@ -154,7 +184,10 @@ describe.runIf(present)('the built apps in Chromium', () => {
       if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`);
     });
     await page.goto(url);
-    await page.waitForFunction(() => (globalThis as { physinApp?: unknown }).physinApp !== undefined, undefined, { timeout: 60_000, polling: 50 });
+    await page.waitForFunction(() => (globalThis as { physinApp?: unknown }).physinApp !== undefined, undefined, {
+      timeout: 60_000,
+      polling: 50,
+    });
     const result = await page.evaluate(() => (globalThis as { physinApp?: unknown }).physinApp as Result);
     await page.screenshot({ path: join(artifacts, `${shot}.png`) });
     await page.close();

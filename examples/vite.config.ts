@@ -8,7 +8,7 @@
 import { copyFileSync, mkdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
+import { fileURLToPath, pathToFileURL } from 'node:url';
 import { defineConfig } from 'vite';
 import type { Plugin } from 'vite';
 import { pages } from './pages.js';
@@ -33,8 +33,32 @@ function classicScripts(): Plugin {
   return { name: 'physin-classic-scripts', buildStart: copy, configureServer: copy };
 }
 
+/**
+ * Builds the API reference (TypeDoc, scripts/api-docs.mjs) into public/api, served as /api/ by the
+ * dev server and copied into dist by `vite build`. The script skips TypeDoc (about 8 s) when the
+ * reference is newer than every source; a failure is logged and leaves the rest of the site up.
+ */
+function apiReference(): Plugin {
+  const build = async (): Promise<void> => {
+    // Imported at run time, not bundled into this config: the script loads TypeDoc itself.
+    const script = pathToFileURL(here('../scripts/api-docs.mjs')).href;
+    const { buildApiDocs } = (await import(script)) as {
+      buildApiDocs: () => Promise<{ built: boolean; warnings: string[]; errors: string[]; ms: number }>;
+    };
+    try {
+      const { built, warnings, errors, ms } = await buildApiDocs();
+      if (built) {
+        console.log(`API reference: public/api in ${(ms / 1000).toFixed(1)} s (${warnings.length} warnings, ${errors.length} errors)`);
+      }
+    } catch (error) {
+      console.error('API reference not built:', error);
+    }
+  };
+  return { name: 'physin-api-reference', buildStart: build, configureServer: build };
+}
+
 export default defineConfig({
-  plugins: [classicScripts()],
+  plugins: [classicScripts(), apiReference()],
   root: here('.'),
   base: './',
   build: {

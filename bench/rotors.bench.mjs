@@ -60,7 +60,6 @@ console.log(
 
 // ---- 3D: our closed forms against gl-matrix -------------------------------------------------
 const I3 = byN.get(3);
-const K3 = I3.D.kernels;
 // gl-matrix layout [x, y, z, w] of the same rotations: (w, x, y, z) = (s, −e12, e02, −e01).
 const toGl = (R) => Float64Array.from([-R[3], R[2], -R[1], R[0]]);
 const glA = I3.rotors.map(toGl);
@@ -151,7 +150,7 @@ medianTable('Other rotor kernels, generic vs fast, ns/op (median)', otherRows);
 }
 
 // ---- the floor: what the timing loop itself costs per call ---------------------------------
-let floor = 0;
+let floor;
 {
   const I = byN.get(4);
   function copyOne(out, R, v) {

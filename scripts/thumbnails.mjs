@@ -35,6 +35,7 @@ for (const shot of shots) {
   // scaled in the browser itself: draw the shot into a canvas of the wanted size (cropped to fit)
   const scaled = await page.evaluate(
     async ({ data, width, height }) => {
+      /* global document, Image -- this function runs in the page (page.evaluate), not in Node */
       const image = new Image();
       image.src = `data:image/png;base64,${data}`;
       await image.decode();

@@ -88,7 +88,8 @@ export function timeOp(op, args, options = {}) {
   return timeLoop(make(op, ...args), options);
 }
 
-let globalSink = 0;
+/** Every result the timed loops computed, folded together; exported so the work stays observable. */
+export let globalSink = 0;
 
 /** Folds a benchmark result into an integer so the JIT must compute it. */
 function keep(value) {

@@ -54,7 +54,23 @@ function apiReference(): Plugin {
       console.error('API reference not built:', error);
     }
   };
-  return { name: 'physin-api-reference', buildStart: build, configureServer: build };
+  return {
+    name: 'physin-api-reference',
+    buildStart: build,
+    async configureServer(server) {
+      await build();
+      // The dev server answers a folder with the site's index.html: /api/ must give the reference's.
+      server.middlewares.use((request, response, next) => {
+        const path = request.url?.split(/[?#]/)[0] ?? '';
+        if (path === '/api') {
+          response.writeHead(301, { location: '/api/' }).end();
+          return;
+        }
+        if (path.startsWith('/api/') && path.endsWith('/')) request.url = `${path}index.html`;
+        next();
+      });
+    },
+  };
 }
 
 export default defineConfig({

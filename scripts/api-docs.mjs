@@ -14,6 +14,7 @@
 import { existsSync, readdirSync, statSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
+import { stripVTControlCharacters } from 'node:util';
 import * as td from 'typedoc';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '..');
@@ -105,7 +106,7 @@ export async function runTypedoc({ emit = true, quiet = false } = {}) {
     const errors = [];
     const log = app.logger.log.bind(app.logger);
     app.logger.log = (message, level) => {
-      const plain = message.replace(/\x1b\[[0-9;]*m/g, '');
+      const plain = stripVTControlCharacters(message);
       // TSDoc complaints about comments inside node_modules (three.js's Layers has two @returns)
       // are not ours to fix: dropped. Every warning about a PhysiN file is kept.
       if (level === td.LogLevel.Warn && /comment at \S*node_modules[\\/]/.test(plain)) return;

@@ -22,7 +22,13 @@ function check(fn: string, name: string, value: ArrayLike<number>, length: numbe
 }
 
 /** out = the quaternion [x, y, z, w] (three.js order) of the 3D rotor R. */
-export function rotorToQuaternion<T extends { [i: number]: number; length: number }>(out: T, R: ArrayLike<number>): T {
+export function rotorToQuaternion<
+  T extends {
+    [i: number]: number;
+    /** Count of numbers. */
+    length: number;
+  },
+>(out: T, R: ArrayLike<number>): T {
   check('rotorToQuaternion', 'R', R, 4);
   const r0 = R[0]!;
   const r1 = R[1]!;
@@ -36,7 +42,13 @@ export function rotorToQuaternion<T extends { [i: number]: number; length: numbe
 }
 
 /** out = the 3D rotor of the quaternion q = [x, y, z, w] (three.js order). */
-export function quaternionToRotor<T extends { [i: number]: number; length: number }>(out: T, q: ArrayLike<number>): T {
+export function quaternionToRotor<
+  T extends {
+    [i: number]: number;
+    /** Count of numbers. */
+    length: number;
+  },
+>(out: T, q: ArrayLike<number>): T {
   check('quaternionToRotor', 'q', q, 4);
   const x = q[0]!;
   const y = q[1]!;
@@ -50,7 +62,13 @@ export function quaternionToRotor<T extends { [i: number]: number; length: numbe
 }
 
 /** out (16 numbers, column-major as three's Matrix4.elements) = the rotation of the 3D rotor R. */
-export function rotorToMatrix4<T extends { [i: number]: number; length: number }>(out: T, R: ArrayLike<number>): T {
+export function rotorToMatrix4<
+  T extends {
+    [i: number]: number;
+    /** Count of numbers. */
+    length: number;
+  },
+>(out: T, R: ArrayLike<number>): T {
   check('rotorToMatrix4', 'R', R, 4);
   const w = R[0]!;
   const x = -R[3]!;
@@ -88,7 +106,13 @@ export function rotorToMatrix4<T extends { [i: number]: number; length: number }
 }
 
 /** out = the 3D bivector [xy, xz, yz] of the axis vector a (ω about a, right-handed). */
-export function axisToBivector3<T extends { [i: number]: number; length: number }>(out: T, a: ArrayLike<number>): T {
+export function axisToBivector3<
+  T extends {
+    [i: number]: number;
+    /** Count of numbers. */
+    length: number;
+  },
+>(out: T, a: ArrayLike<number>): T {
   check('axisToBivector3', 'a', a, 3);
   const ax = a[0]!;
   const ay = a[1]!;
@@ -100,7 +124,13 @@ export function axisToBivector3<T extends { [i: number]: number; length: number 
 }
 
 /** out = the axis vector of the 3D bivector B = [xy, xz, yz]. */
-export function bivectorToAxis3<T extends { [i: number]: number; length: number }>(out: T, B: ArrayLike<number>): T {
+export function bivectorToAxis3<
+  T extends {
+    [i: number]: number;
+    /** Count of numbers. */
+    length: number;
+  },
+>(out: T, B: ArrayLike<number>): T {
   check('bivectorToAxis3', 'B', B, 3);
   const xy = B[0]!;
   const xz = B[1]!;

@@ -204,8 +204,11 @@ export interface HyperTorusOptions {
  * traced surface (see `TorusSlicer`).
  */
 export class HyperTorusMesh extends HyperShapeMesh {
+  /** Radius of the core circle (m). */
   readonly majorRadius: number;
+  /** Distance from the core circle to the surface (m). */
   readonly minorRadius: number;
+  /** The two body axes [i, j] of the core circle's plane. */
   readonly plane: readonly [number, number];
   private readonly slicer: TorusSlicer | null;
   private readonly pose: { majorRadius: number; minorRadius: number; planeI: number; planeJ: number; x: Float64Array; M: Float64Array };

@@ -35,8 +35,11 @@ export abstract class Joint extends EventDispatcher<JointEventMap> {
   _id: HostId | null = null;
   /** @internal */
   _link: JointLink | null = null;
+  /** The anchor on `a`, in a's frame (n numbers), or null for the default. */
   protected localA: Float64Array | null;
+  /** The anchor on `b` in b's frame, or a world point when `b` is null; null for the default. */
   protected localB: Float64Array | null;
+  /** The options given (a copy), sent with the joint's description when it is added. */
   protected readonly options: Record<string, unknown>;
   private readonly kind: JointDescription['kind'];
 

@@ -8,7 +8,9 @@ import { finite } from './checks.js';
 
 /** What `material._physiN` holds. */
 export interface PhysinMaterialValues {
+  /** Friction coefficient (>= 0); missing: the engine's default. */
   friction?: number;
+  /** Restitution, in [0, 1]; missing: the engine's default. */
   restitution?: number;
 }
 
@@ -16,7 +18,10 @@ export interface PhysinMaterialValues {
  * Puts `{ friction, restitution }` on `material._physiN` (read by the meshes at `scene.add`) and
  * returns the material, as Physijs's `createMaterial`.
  */
-export function createMaterial<M extends Material>(material: M, friction?: number, restitution?: number): M & { _physiN: PhysinMaterialValues } {
+export function createMaterial<M extends Material>(material: M, friction?: number, restitution?: number): M & {
+  /** The values the meshes read at `scene.add`. */
+  _physiN: PhysinMaterialValues;
+} {
   const where = 'createMaterial';
   if (material === null || typeof material !== 'object' || (material as { isMaterial?: boolean }).isMaterial !== true) {
     throw new TypeError(`${where}: argument 'material' must be a THREE.Material`);

@@ -16,6 +16,7 @@ import { describe, finite, integer, numbers } from './checks.js';
 
 /** A collision of two meshes, as the `collision` event of each (a new object per event). */
 export interface CollisionEvent {
+  /** Always 'collision'. */
   readonly type: 'collision';
   /** 'begin' when the two start touching, 'end' when they stop. */
   readonly phase: 'begin' | 'end';

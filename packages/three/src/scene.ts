@@ -46,9 +46,15 @@ export interface SceneEventMap extends THREE.Object3DEventMap {
   /** A report was applied: every mesh is up to date. */
   update: object;
   /** The worker died (an error, or it was ended); `scene.host.restart()` brings it back. */
-  died: { readonly error: Error | null };
+  died: {
+    /** The error the worker reported, if any. */
+    readonly error: Error | null;
+  };
   /** A step failed in the engine (for example a non-finite state); the world is as it left it. */
-  error: { readonly error: Error };
+  error: {
+    /** The engine's error. */
+    readonly error: Error;
+  };
 }
 
 /** A three.js scene whose PhysiN meshes are bodies of one world. */
@@ -119,6 +125,7 @@ export class Scene extends THREE.Scene<SceneEventMap> {
     return this.slice.length > 0 ? this.slice[0]! : 0;
   }
 
+  /** Moves the shown 3-flat along w (a finite number; ignored for n < 4). */
   set sliceW(value: number) {
     finite('Scene.sliceW', 'value', value, undefined, 'coordinate');
     if (this.slice.length > 0) this.slice[0] = value;

@@ -28,17 +28,38 @@ export type HostId = number;
 
 /** A shape, described by its kind and size (the engine's factories, as data). */
 export type ShapeDescription =
-  | { readonly kind: 'box'; readonly halfExtents: ArrayLike<number> }
-  | { readonly kind: 'sphere'; readonly radius: number }
-  | { readonly kind: 'halfspace'; readonly normal: ArrayLike<number>; readonly offset: number }
   | {
+      /** A hyperbox (the engine's `HyperBox`), centred on the body's position. */
+      readonly kind: 'box';
+      /** Half the side along each axis (m, n numbers, > 0). */
+      readonly halfExtents: ArrayLike<number>;
+    }
+  | {
+      /** A ball (the engine's `HyperSphere`), centred on the body's position. */
+      readonly kind: 'sphere';
+      /** Its radius (m, > 0). */
+      readonly radius: number;
+    }
+  | {
+      /** The half-space x · normal <= offset (the engine's `HalfSpace`); its body is static. */
+      readonly kind: 'halfspace';
+      /** Normal of the boundary, pointing out of the solid (n numbers, not all zero). */
+      readonly normal: ArrayLike<number>;
+      /** The boundary is the set x · normal = offset (m; both are divided by |normal|). */
+      readonly offset: number;
+    }
+  | {
+      /** A solid torus (the engine's `HyperTorus`): the points within `minorRadius` of a circle. */
       readonly kind: 'torus';
+      /** Radius of the circle (m, > minorRadius). */
       readonly majorRadius: number;
+      /** Distance from the circle (m, > 0). */
       readonly minorRadius: number;
       /** The two axes of the major circle, [i, j] with i < j. */
       readonly plane: readonly [number, number];
     }
   | {
+      /** A convex polytope (the engine's `ConvexMesh`) from its vertices and boundary facets. */
       readonly kind: 'convex';
       /** Vertices, n numbers each, flat. */
       readonly vertices: ArrayLike<number>;
@@ -56,49 +77,80 @@ export type ShapeDescription =
 
 /** A body, as data: the engine's `BodyOptions` with a shape description in place of a shape. */
 export interface BodyDescription {
+  /** The collision and mass shape. */
   readonly shape: ShapeDescription;
+  /** Mass (kg, >= 0); 0 makes the body static. Default 1 (0 for a half-space). */
   readonly mass?: number;
+  /** How the body moves; default 'dynamic', or 'static' when the mass is 0 or the shape a half-space. */
   readonly type?: BodyType;
+  /** Position of the shape's origin (m, n numbers); default the world origin. */
   readonly position?: ArrayLike<number>;
+  /** Orientation rotor (r numbers, a unit rotor); default the identity. */
   readonly rotor?: ArrayLike<number>;
+  /** Linear velocity (m/s, n numbers); default 0. Not on a static body. */
   readonly velocity?: ArrayLike<number>;
+  /** World angular velocity bivector (rad/s, k numbers); default 0. Not on a static body. */
   readonly angularVelocity?: ArrayLike<number>;
+  /** Friction and restitution; missing entries take the engine's `bodyDefaults`. */
   readonly material?: Partial<Material>;
+  /** A name, used in error messages. */
   readonly name?: string;
 }
 
 /** Options every joint takes (the engine's `JointOptions`). */
 export interface JointDescriptionOptions {
+  /** Frequency of a soft joint (Hz, >= 0; 0 = rigid). Default: the world's `constraintHertz`. */
   readonly hertz?: number;
+  /** Damping ratio of a soft joint (>= 0; 1 = critical). Default: the world's `constraintDamping`. */
   readonly damping?: number;
+  /** The joint breaks when its linear load exceeds this (N). 0 (default) = never. */
   readonly breakForce?: number;
+  /** The joint breaks when its angular load exceeds this (N·m). 0 (default) = never. */
   readonly breakTorque?: number;
+  /** Let the two bodies collide with each other (default false). */
   readonly collideConnected?: boolean;
-  /** distance: */
+  /** distance: the length to hold (m, >= 0); default the distance of the anchors when added. */
   readonly rest?: number;
+  /** distance: 'rod' (default, both ways), 'rope' (at most `rest`) or 'strut' (at least `rest`). */
   readonly mode?: DistanceMode;
-  /** hinge: */
+  /** hinge: the free plane in a's frame, a plane index or a simple bivector (k numbers); default 0. */
   readonly plane?: number | ArrayLike<number>;
+  /** hinge: lower limit of the angle (rad); default −Infinity (none). */
   readonly lowerAngle?: number;
+  /** hinge: upper limit of the angle (rad); default +Infinity (none). */
   readonly upperAngle?: number;
+  /** hinge: target speed of the motor (rad/s); default 0. */
   readonly motorSpeed?: number;
+  /** hinge: largest torque of the motor (N·m, >= 0); default 0 = no motor. */
   readonly maxMotorTorque?: number;
-  /** subspace: */
+  /** subspace: the axes (0..n−1) along which the anchors are held together. Not with `freeAxes`. */
   readonly lockAxes?: ArrayLike<number>;
+  /** subspace: the axes left free; every other axis is locked. Not with `lockAxes`. */
   readonly freeAxes?: ArrayLike<number>;
+  /** subspace: the rotation planes (0..k−1, lexicographic) that are locked. Not with `freePlanes`. */
   readonly lockPlanes?: ArrayLike<number>;
+  /** subspace: the planes left free; every other plane is locked. Not with `lockPlanes`. */
   readonly freePlanes?: ArrayLike<number>;
+  /** subspace: axes and planes in the world frame (true) or in a's frame (false, default). */
   readonly worldFrame?: boolean;
 }
 
 /** A joint, as data. `b` null holds `a` to the world. Anchors are local to their body. */
 export interface JointDescription {
+  /** Which of the engine's joints: `PointJoint`, `DistanceJoint`, `FixedJoint`, `HingeJoint`, `SubspaceJoint`. */
   readonly kind: 'point' | 'distance' | 'fixed' | 'hinge' | 'subspace';
+  /** The first body. */
   readonly a: HostId;
+  /** The second body, or null for the world. */
   readonly b: HostId | null;
-  /** Not used by 'subspace' (it takes them in options as the engine does). */
+  /**
+   * Anchor on a, in a's frame (n numbers; default zeros). Not used by 'subspace' (it takes them
+   * in options as the engine does).
+   */
   readonly localA?: ArrayLike<number>;
+  /** Anchor on b in b's frame, or a world point when b is null (n numbers; default zeros). Not used by 'subspace'. */
   readonly localB?: ArrayLike<number>;
+  /** The common options and those of the kind. */
   readonly options?: JointDescriptionOptions;
 }
 
@@ -107,28 +159,174 @@ export interface JointDescription {
  * `{ joint, ... }`.
  */
 export interface CommandMap {
-  setGravity: { readonly gravity: ArrayLike<number> };
-  setParams: { readonly params: Partial<Params> };
-  setMass: { readonly id: HostId; readonly value: number };
-  setMaterial: { readonly id: HostId; readonly friction?: number; readonly restitution?: number };
-  wake: { readonly id: HostId };
-  setPositionN: { readonly id: HostId; readonly position: ArrayLike<number> };
-  setRotor: { readonly id: HostId; readonly rotor: ArrayLike<number> };
-  rotateInPlane: { readonly id: HostId; readonly i: number; readonly j: number; readonly angle: number };
-  setLinearVelocity: { readonly id: HostId; readonly velocity: ArrayLike<number> };
-  setAngularVelocity: { readonly id: HostId; readonly angularVelocity: ArrayLike<number> };
-  applyCentralImpulse: { readonly id: HostId; readonly impulse: ArrayLike<number> };
-  applyImpulse: { readonly id: HostId; readonly impulse: ArrayLike<number>; readonly offset: ArrayLike<number> };
-  applyCentralForce: { readonly id: HostId; readonly force: ArrayLike<number> };
-  applyForce: { readonly id: HostId; readonly force: ArrayLike<number>; readonly offset: ArrayLike<number> };
-  applyTorque: { readonly id: HostId; readonly torque: ArrayLike<number> };
-  setSoftness: { readonly joint: HostId; readonly hertz: number; readonly damping: number };
-  setBreak: { readonly joint: HostId; readonly force: number; readonly torque: number };
-  setAnchors: { readonly joint: HostId; readonly localA: ArrayLike<number> | null; readonly localB: ArrayLike<number> | null };
-  setLimits: { readonly joint: HostId; readonly lower: number; readonly upper: number };
-  setMotor: { readonly joint: HostId; readonly speed: number; readonly maxTorque: number };
-  setRest: { readonly joint: HostId; readonly rest: number };
-  setMode: { readonly joint: HostId; readonly mode: DistanceMode };
+  /** `World.setGravity`. */
+  setGravity: {
+    /** The gravity vector (m/s², n numbers). */
+    readonly gravity: ArrayLike<number>;
+  };
+  /** `World.setParams`: changes some of the world's tolerances (the others keep their value). */
+  setParams: {
+    /** The tolerances to change (see the engine's `defaultParams`). */
+    readonly params: Partial<Params>;
+  };
+  /** `Body.setMass`. */
+  setMass: {
+    /** The body. */
+    readonly id: HostId;
+    /** The new mass (kg, >= 0). */
+    readonly value: number;
+  };
+  /** `Body.setMaterial`: entries left out keep their value. */
+  setMaterial: {
+    /** The body. */
+    readonly id: HostId;
+    /** Friction coefficient (>= 0). */
+    readonly friction?: number;
+    /** Restitution (0..1). */
+    readonly restitution?: number;
+  };
+  /** `Body.wake`: wakes a sleeping body. */
+  wake: {
+    /** The body. */
+    readonly id: HostId;
+  };
+  /** `Body.setPositionN`: moves the body (a teleport: velocities are kept). */
+  setPositionN: {
+    /** The body. */
+    readonly id: HostId;
+    /** The new position (m, n numbers). */
+    readonly position: ArrayLike<number>;
+  };
+  /** `Body.setRotor`: sets the orientation. */
+  setRotor: {
+    /** The body. */
+    readonly id: HostId;
+    /** The new orientation (r numbers, a unit rotor). */
+    readonly rotor: ArrayLike<number>;
+  };
+  /** `Body.rotateInPlane`: turns the body by `angle` in the plane of the axes i and j. */
+  rotateInPlane: {
+    /** The body. */
+    readonly id: HostId;
+    /** The first axis of the plane (0..n−1). */
+    readonly i: number;
+    /** The second axis of the plane (0..n−1, not i). */
+    readonly j: number;
+    /** The angle (rad), from axis i towards axis j. */
+    readonly angle: number;
+  };
+  /** `Body.setLinearVelocity`. */
+  setLinearVelocity: {
+    /** The body. */
+    readonly id: HostId;
+    /** The velocity of the centre of mass (m/s, n numbers). */
+    readonly velocity: ArrayLike<number>;
+  };
+  /** `Body.setAngularVelocity`. */
+  setAngularVelocity: {
+    /** The body. */
+    readonly id: HostId;
+    /** The world angular velocity bivector (rad/s, k numbers). */
+    readonly angularVelocity: ArrayLike<number>;
+  };
+  /** `Body.applyCentralImpulse`: an impulse at the centre of mass. */
+  applyCentralImpulse: {
+    /** The body. */
+    readonly id: HostId;
+    /** The impulse (N·s, n numbers). */
+    readonly impulse: ArrayLike<number>;
+  };
+  /** `Body.applyImpulse`: an impulse at a point of the body. */
+  applyImpulse: {
+    /** The body. */
+    readonly id: HostId;
+    /** The impulse (N·s, n numbers). */
+    readonly impulse: ArrayLike<number>;
+    /** The point of application minus the centre of mass (m, n numbers, world frame). */
+    readonly offset: ArrayLike<number>;
+  };
+  /** `Body.applyCentralForce`: a force at the centre of mass, for the next step. */
+  applyCentralForce: {
+    /** The body. */
+    readonly id: HostId;
+    /** The force (N, n numbers). */
+    readonly force: ArrayLike<number>;
+  };
+  /** `Body.applyForce`: a force at a point of the body, for the next step. */
+  applyForce: {
+    /** The body. */
+    readonly id: HostId;
+    /** The force (N, n numbers). */
+    readonly force: ArrayLike<number>;
+    /** The point of application minus the centre of mass (m, n numbers, world frame). */
+    readonly offset: ArrayLike<number>;
+  };
+  /** `Body.applyTorque`: a torque for the next step. */
+  applyTorque: {
+    /** The body. */
+    readonly id: HostId;
+    /** The torque bivector (N·m, k numbers, world frame). */
+    readonly torque: ArrayLike<number>;
+  };
+  /** `Joint.setSoftness`. */
+  setSoftness: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** Frequency (Hz, >= 0; 0 = rigid). */
+    readonly hertz: number;
+    /** Damping ratio (>= 0; 1 = critical). */
+    readonly damping: number;
+  };
+  /** `Joint.setBreak`: the loads at which the joint breaks (0 = never). */
+  setBreak: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** Break force (N, >= 0). */
+    readonly force: number;
+    /** Break torque (N·m, >= 0). */
+    readonly torque: number;
+  };
+  /** `Joint.setAnchors`: moves the anchors (null keeps one). */
+  setAnchors: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** The anchor on a, in a's frame (n numbers), or null to keep it. */
+    readonly localA: ArrayLike<number> | null;
+    /** The anchor on b (a world point when b is null), or null to keep it. */
+    readonly localB: ArrayLike<number> | null;
+  };
+  /** `HingeJoint.setLimits` (a hinge only). */
+  setLimits: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** Lower limit of the angle (rad; −Infinity = none). */
+    readonly lower: number;
+    /** Upper limit of the angle (rad; +Infinity = none). */
+    readonly upper: number;
+  };
+  /** `HingeJoint.setMotor` (a hinge only). */
+  setMotor: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** Target speed (rad/s). */
+    readonly speed: number;
+    /** Largest torque (N·m, >= 0; 0 = off). */
+    readonly maxTorque: number;
+  };
+  /** `DistanceJoint.setRest` (a distance joint only). */
+  setRest: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** The length to hold (m, >= 0). */
+    readonly rest: number;
+  };
+  /** `DistanceJoint.setMode` (a distance joint only). */
+  setMode: {
+    /** The joint. */
+    readonly joint: HostId;
+    /** 'rod', 'rope' or 'strut'. */
+    readonly mode: DistanceMode;
+  };
 }
 
 /** The name of a command. */
@@ -165,12 +363,15 @@ export interface StepReport {
   readonly collisions: Float32Array;
   /** Ids of the joints that broke in this step (they left the world). */
   readonly broken: Int32Array;
+  /** Count of ids in `broken` (its length). */
   readonly brokenCount: number;
   /** Ids of the bodies that fell asleep in this step. */
   readonly slept: Int32Array;
+  /** Count of ids in `slept` (its length). */
   readonly sleptCount: number;
   /** Ids of the bodies that woke in this step. */
   readonly woke: Int32Array;
+  /** Count of ids in `woke` (its length). */
   readonly wokeCount: number;
   /**
    * Report buffers the world's thread has created so far: two at the start (the reports travel
@@ -181,6 +382,7 @@ export interface StepReport {
 
 /** A host event: the worker died (an error, or `terminate()` by someone else). */
 export interface HostDiedEvent {
+  /** Always 'died'. */
   readonly type: 'died';
   /** The error the worker reported, if any. */
   readonly error: Error | null;
@@ -227,7 +429,9 @@ export interface WorldHost {
   moveTo(thread: ThreadKind): Promise<void>;
   /** Starts a new worker from the last snapshot after the worker died. */
   restart(): Promise<void>;
+  /** Calls `listener` when the worker dies (see {@link HostDiedEvent}). */
   addEventListener(type: 'died', listener: (event: HostDiedEvent) => void): void;
+  /** Stops calling a listener added by `addEventListener`. */
   removeEventListener(type: 'died', listener: (event: HostDiedEvent) => void): void;
   /** Ends the worker (if any) and frees the world. */
   dispose(): void;

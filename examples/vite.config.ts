@@ -48,7 +48,9 @@ function apiReference(): Plugin {
     try {
       const { built, warnings, errors, ms } = await buildApiDocs();
       if (built) {
-        console.log(`API reference: public/api in ${(ms / 1000).toFixed(1)} s (${warnings.length} warnings, ${errors.length} errors)`);
+        console.log(
+          `API reference: public/api in ${(ms / 1000).toFixed(1)} s (${warnings.length} warnings, ${errors.length} errors)`,
+        );
       }
     } catch (error) {
       console.error('API reference not built:', error);

@@ -59,6 +59,16 @@ export function load(app) {
       if (context.project.getReflectionById(reflection.id) === reflection) context.project.removeReflection(reflection);
     }
   });
+  // typedoc.json's `navigationLinks` leads back to the examples site with "../", which TypeDoc
+  // writes as it is on every page: made relative to each page (classes/x.html needs "../../").
+  app.renderer.on('endPage', (page) => {
+    if (!page.contents) return;
+    const up = '../'.repeat(page.url.split('/').length);
+    page.contents = page.contents.replace(
+      /<a href="\.\.\/"((?: class="tsd-nav-link")?)>Examples<\/a>/g,
+      `<a href="${up}"$1>Examples</a>`,
+    );
+  });
   // Before TypeDoc resolves the links of the merged project (its own listener has priority -300).
   app.on('reviveProject', (project) => {
     const file = new td.MinimalSourceFile(FRONT_PAGE, join(root, 'typedoc.json'));
@@ -115,7 +125,8 @@ export async function runTypedoc({ emit = true, quiet = false } = {}) {
       if (!quiet || level >= td.LogLevel.Error) log(message, level);
     };
     const project = await app.convert();
-    if (!project) return { warnings, errors: errors.length ? errors : ['TypeDoc: conversion failed'], ms: performance.now() - start };
+    if (!project)
+      return { warnings, errors: errors.length ? errors : ['TypeDoc: conversion failed'], ms: performance.now() - start };
     app.validate(project);
     if (emit) await app.generateOutputs(project);
     return { warnings, errors, ms: performance.now() - start };

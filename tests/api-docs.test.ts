@@ -45,7 +45,9 @@ describe('API reference (TypeDoc)', () => {
   it('every export of the four packages is documented, and TypeDoc warns of nothing', async () => {
     const { runTypedoc } = await load();
     const { warnings, errors, ms } = await runTypedoc({ emit: false, quiet: true });
-    console.log(`TypeDoc conversion and validation: ${(ms / 1000).toFixed(1)} s, ${warnings.length} warnings, ${errors.length} errors`);
+    console.log(
+      `TypeDoc conversion and validation: ${(ms / 1000).toFixed(1)} s, ${warnings.length} warnings, ${errors.length} errors`,
+    );
     const undocumented = undocumentedByPackage(warnings);
     const others = warnings.filter((w) => !w.includes('does not have any documentation'));
     const report = [
@@ -82,5 +84,7 @@ describe('API reference (TypeDoc)', () => {
     const mesh = readFileSync(join(API_OUT, 'classes/_physin_three.Mesh.html'), 'utf8');
     expect(mesh).toContain('setPositionN');
     expect(mesh).not.toContain('updateMatrixWorld');
+    // The Examples link at the top leads back to the site from any depth.
+    expect(mesh).toContain('<a href="../../">Examples</a>');
   });
 });

@@ -87,13 +87,14 @@ function newest(dir) {
   return t;
 }
 
-/** True when the reference on disk is older than a source, a package.json or the options. */
+/** True when the reference on disk is older than a source, a package.json or README.md, or the options. */
 export function apiDocsStale() {
   const index = join(API_OUT, 'index.html');
   if (!existsSync(index)) return true;
   const built = statSync(index).mtimeMs;
   const inputs = [join(root, 'typedoc.json'), fileURLToPath(import.meta.url)];
-  for (const name of PACKAGES) inputs.push(join(root, 'packages', name, 'package.json'));
+  for (const name of PACKAGES)
+    inputs.push(join(root, 'packages', name, 'package.json'), join(root, 'packages', name, 'README.md'));
   if (inputs.some((file) => statSync(file).mtimeMs > built)) return true;
   return PACKAGES.some((name) => newest(join(root, 'packages', name, 'src')) > built);
 }

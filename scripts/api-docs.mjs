@@ -110,7 +110,7 @@ export async function runTypedoc({ emit = true, quiet = false } = {}) {
   if (cwd !== root) process.chdir(root); // TypeDoc resolves the packages' paths against the working directory.
   try {
     const app = await td.Application.bootstrapWithPlugins(
-      { options: join(root, 'typedoc.json'), ...(emit ? {} : { emit: 'none' }) },
+      { options: join(root, 'typedoc.json'), ...(emit ? {} : { emit: 'none' }), ...(quiet ? { logLevel: 'Warn' } : {}) },
       [new td.TypeDocReader(), new td.PackageJsonReader(), new td.TSConfigReader()],
     );
     const warnings = [];

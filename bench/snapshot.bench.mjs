@@ -1,4 +1,4 @@
-// World snapshots: the cost of `world.snapshot()` and `World.restore(bytes)`, and the size of the
+// World snapshots: the cost of `snapshotWorld(world)` and `restoreWorld(bytes)`, and the size of the
 // bytes, on the piles of the contact benchmark (1000 unit boxes in 3D, 300 hypercubes in 4D,
 // dropped on the ground, dt = 1/60, sleep off) after 120 steps (falling and landing: many
 // contacts, manifolds and warm-start impulses) and after 600 steps (at rest).
@@ -12,16 +12,17 @@ import { performance } from 'node:perf_hooks';
 import { medianTable } from './lib/table.mjs';
 
 let physin;
-let World;
+let snapshotWorld;
+let restoreWorld;
 try {
   physin = await import('./scenes/physin-scenes.mjs');
-  ({ World } = await import('@physin/engine'));
+  ({ snapshotWorld, restoreWorld } = await import('@physin/engine'));
 } catch (error) {
   console.error(`snapshot.bench: cannot load the built engine (build it first: npm run build): ${error?.stack ?? error}`);
   process.exit(1);
 }
-if (typeof World.restore !== 'function') {
-  console.error('snapshot.bench: the built engine has no World.restore (rebuild it: npm run build)');
+if (typeof restoreWorld !== 'function') {
+  console.error('snapshot.bench: the built engine has no restoreWorld (rebuild it: npm run build)');
   process.exit(1);
 }
 
@@ -55,15 +56,15 @@ for (const [count, n] of [
     }
     const snapTimes = [];
     const restoreTimes = [];
-    let bytes = world.snapshot();
+    let bytes = snapshotWorld(world);
     for (let i = 0; i < REPEATS; i += 1) {
       const t0 = performance.now();
-      bytes = world.snapshot();
+      bytes = snapshotWorld(world);
       snapTimes.push(performance.now() - t0);
       const t1 = performance.now();
-      const restored = World.restore(bytes);
+      const restored = restoreWorld(bytes);
       restoreTimes.push(performance.now() - t1);
-      if (i === 0 && !sameBytes(restored.snapshot(), bytes)) {
+      if (i === 0 && !sameBytes(snapshotWorld(restored), bytes)) {
         console.error(`snapshot.bench: pile${count} ${n}D at step ${at}: the restored world's snapshot differs`);
         failures += 1;
       }

@@ -1,5 +1,5 @@
 /**
- * Engine snapshots: `world.snapshot()` and `World.restore(bytes)`.
+ * Engine snapshots: `snapshotWorld(world)` and `restoreWorld(bytes)`.
  *
  * The key property: a restored world continued for 600 steps is bit-identical to the original
  * continued for 600 steps — every Float64 of every body's record (x, R, v, L, w, force, torque),
@@ -34,6 +34,9 @@ import {
   PointJoint,
   SubspaceJoint,
   World,
+  castRay,
+  restoreWorld,
+  snapshotWorld,
 } from '@physin/engine';
 import type { Joint } from '@physin/engine';
 import { cubeBoundary } from './support/meshes.js';
@@ -181,18 +184,18 @@ describe('snapshot and restore: bit-identical continuation, every joint type, 3D
       const { world, breakable } = richScene(n);
       runUntil(world, () => false, 20);
       expect(world.bodies.some((b) => b.v[1]! < -1), 'something falls').toBe(true);
-      const mid = World.restore(world.snapshot());
-      expectSameBytes(mid.snapshot(), world.snapshot(), `n = ${n}, mid-fall: snapshot of the restored world`);
+      const mid = restoreWorld(snapshotWorld(world));
+      expectSameBytes(snapshotWorld(mid), snapshotWorld(world), `n = ${n}, mid-fall: snapshot of the restored world`);
       expectSameContinuation(world, mid, CONTINUE, `n = ${n}, mid-fall`);
       expect(breakable.broken, 'the breakable hinge broke within the continued steps').toBe(true);
-      expectSameBytes(mid.snapshot(), world.snapshot(), `n = ${n}, ${CONTINUE} steps after mid-fall`);
+      expectSameBytes(snapshotWorld(mid), snapshotWorld(world), `n = ${n}, ${CONTINUE} steps after mid-fall`);
 
       // Just after the break.
       const second = richScene(n);
       const steps = runUntil(second.world, () => second.breakable.broken, 600);
       expect(second.breakable.broken, 'the breakable hinge breaks').toBe(true);
       expect(steps).toBeGreaterThan(2);
-      const afterBreak = World.restore(second.world.snapshot());
+      const afterBreak = restoreWorld(snapshotWorld(second.world));
       expect(afterBreak.constraints.length).toBe(second.world.constraints.length);
       expectSameContinuation(second.world, afterBreak, CONTINUE, `n = ${n}, after the break`);
 
@@ -200,14 +203,14 @@ describe('snapshot and restore: bit-identical continuation, every joint type, 3D
       const third = richScene(n);
       runUntil(third.world, () => third.world.stepCount >= 60 && third.stackTop.isSleeping, 500);
       expect(third.stackTop.isSleeping, 'the stack sleeps').toBe(true);
-      const rest = World.restore(third.world.snapshot());
+      const rest = restoreWorld(snapshotWorld(third.world));
       const top = rest.bodies[third.world.bodies.indexOf(third.stackTop)]!;
       expect(top.isSleeping).toBe(true);
       expectSameContinuation(third.world, rest, CONTINUE, `n = ${n}, at rest`);
       expect(top.isSleeping, 'the stack was woken by the pushed bodies').toBe(false);
       // A snapshot of a restored world restores to the same bytes again.
-      const again = World.restore(rest.snapshot());
-      expectSameBytes(again.snapshot(), third.world.snapshot(), `n = ${n}, restored twice`);
+      const again = restoreWorld(snapshotWorld(rest));
+      expectSameBytes(snapshotWorld(again), snapshotWorld(third.world), `n = ${n}, restored twice`);
     });
   }
 });
@@ -237,10 +240,10 @@ describe('snapshot and restore: free bodies and a simple contact, n = 2 and 5', 
       const far = new Array<number>(n).fill(50);
       world.addBody(new Body(D, { shape: HyperBox(D, Array.from({ length: n }, (_, c) => 0.1 + 0.1 * c)), mass: 1, position: far, angularVelocity: Array.from({ length: D.k }, (_, p) => 1 + p) }));
       world.step(DT);
-      const restored = World.restore(world.snapshot());
+      const restored = restoreWorld(snapshotWorld(world));
       expectSameContinuation(world, restored, CONTINUE, `n = ${n}`);
       expect(world.touchingCount).toBeGreaterThan(0);
-      expectSameBytes(world.snapshot(), restored.snapshot(), `n = ${n}, after ${CONTINUE} steps`);
+      expectSameBytes(snapshotWorld(world), snapshotWorld(restored), `n = ${n}, after ${CONTINUE} steps`);
     });
   }
 });
@@ -270,8 +273,8 @@ describe('snapshot and restore: piles, where most broadphase pairs do not touch'
       for (const steps of [25, 150]) {
         while (world.stepCount < steps) world.step(DT);
         expect(world.contactCount).toBeGreaterThan(world.touchingCount);
-        const restored = World.restore(world.snapshot());
-        expectSameBytes(restored.snapshot(), world.snapshot(), `pile n = ${n} at ${steps}`);
+        const restored = restoreWorld(snapshotWorld(world));
+        expectSameBytes(snapshotWorld(restored), snapshotWorld(world), `pile n = ${n} at ${steps}`);
         expectSameContinuation(world, restored, 150, `pile n = ${n} from step ${steps}`);
       }
     });
@@ -283,18 +286,18 @@ describe('snapshot is read-only and restore keeps the order', () => {
     for (const n of [2, 8]) {
       const empty = new World({ dimensions: n, gravity: gravity(n), params: { subSteps: 2 } });
       empty.step(DT);
-      const copy = World.restore(empty.snapshot());
+      const copy = restoreWorld(snapshotWorld(empty));
       expect(copy.n).toBe(n);
       expect(copy.bodies.length).toBe(0);
       expect(copy.params.subSteps).toBe(2);
       expect(copy.stepCount).toBe(1);
-      expectSameBytes(copy.snapshot(), empty.snapshot(), `empty n = ${n}`);
+      expectSameBytes(snapshotWorld(copy), snapshotWorld(empty), `empty n = ${n}`);
       const D = empty.D;
       empty.addBody(new Body(D, { shape: HalfSpace(D, axis(n, 1), 0), mass: 0 }));
       empty.addBody(new Body(D, { shape: HyperSphere(D, 1), mass: 0, position: axis(n, 0, 3) }));
-      const statics = World.restore(empty.snapshot());
+      const statics = restoreWorld(snapshotWorld(empty));
       expectSameContinuation(empty, statics, 10, `static bodies n = ${n}`);
-      expectSameBytes(statics.snapshot(), empty.snapshot(), `static bodies n = ${n}`);
+      expectSameBytes(snapshotWorld(statics), snapshotWorld(empty), `static bodies n = ${n}`);
     }
   });
 
@@ -304,16 +307,16 @@ describe('snapshot is read-only and restore keeps the order', () => {
     for (let s = 0; s < 300; s += 1) {
       a.step(DT);
       b.step(DT);
-      if (s % 7 === 0) a.snapshot();
+      if (s % 7 === 0) snapshotWorld(a);
     }
     expect(firstDifference(stateOf(a), stateOf(b))).toBe(-1);
-    expectSameBytes(a.snapshot(), b.snapshot(), 'after 300 steps');
+    expectSameBytes(snapshotWorld(a), snapshotWorld(b), 'after 300 steps');
   });
 
   it('a restored world lists its bodies and joints in the original order', () => {
     const { world } = richScene(4);
     world.step(DT);
-    const restored = World.restore(world.snapshot());
+    const restored = restoreWorld(snapshotWorld(world));
     world.bodies.forEach((body, i) => {
       const copy = restored.bodies[i]!;
       expect(copy).not.toBe(body);
@@ -333,8 +336,8 @@ describe('snapshot is read-only and restore keeps the order', () => {
     const { world, stackTop } = richScene(3);
     for (let s = 0; s < 90; s += 1) world.step(DT);
     world.removeBody(stackTop);
-    const restored = World.restore(world.snapshot());
-    expectSameBytes(restored.snapshot(), world.snapshot(), 'with a departed body');
+    const restored = restoreWorld(snapshotWorld(world));
+    expectSameBytes(snapshotWorld(restored), snapshotWorld(world), 'with a departed body');
     world.step(DT);
     restored.step(DT);
     expect(world.contactEvents.endCount).toBeGreaterThan(0);
@@ -364,7 +367,7 @@ describe('snapshot is read-only and restore keeps the order', () => {
     const gone = [world.bodies[6]!, world.bodies[7]!];
     for (const body of gone) world.removeBody(body);
     world.step(DT);
-    const restored = World.restore(world.snapshot());
+    const restored = restoreWorld(snapshotWorld(world));
     // The removed bodies go back into both worlds: they must get the same (reused) proxy ids.
     for (const body of gone) {
       const ids = body.proxyId;
@@ -394,8 +397,8 @@ describe('snapshot between commands', () => {
     sleeper.setLinearVelocity([0, 2, 0, 0]);
     world.setParams({ iterations: 7, linearDamping: 0.05, manifoldReuseTolerance: 2e-4 });
     world.setGravity([0.5, -9, 0, 0.1]);
-    world.rayCast([0, 10, 0, 0], [0, -1, 0, 0], 20);
-    const restored = World.restore(world.snapshot());
+    castRay(world, [0, 10, 0, 0], [0, -1, 0, 0], 20);
+    const restored = restoreWorld(snapshotWorld(world));
     expect(restored.params).toEqual(world.params);
     expect(Array.from(restored.gravity)).toEqual(Array.from(world.gravity));
     expect(restored.time).toBe(world.time);
@@ -405,7 +408,7 @@ describe('snapshot between commands', () => {
 
   it('shapes come back with the same fields and mass properties, a mesh included', () => {
     const { world } = richScene(4);
-    const restored = World.restore(world.snapshot());
+    const restored = restoreWorld(snapshotWorld(world));
     world.bodies.forEach((body, i) => {
       const a = body.shape as unknown as Record<string, unknown>;
       const b = restored.bodies[i]!.shape as unknown as Record<string, unknown>;
@@ -440,7 +443,7 @@ describe('the last joint of a world removed or broken', () => {
       if (how === 'removed') world.removeConstraint(joint);
       else runUntil(world, () => joint.broken, 100);
       expect(world.constraints.length).toBe(0);
-      const restored = World.restore(world.snapshot());
+      const restored = restoreWorld(snapshotWorld(world));
       expectSameContinuation(world, restored, 120, `last joint ${how}`);
       expect(rod.x[1], 'the rod fell to the ground').toBeLessThan(0.5);
     });
@@ -458,14 +461,14 @@ describe('snapshot at every step of a bounce', () => {
     const states: Float64Array[] = [];
     const snaps: Uint8Array[] = [];
     for (let s = 0; s < 150; s += 1) {
-      snaps.push(world.snapshot());
+      snaps.push(snapshotWorld(world));
       states.push(stateOf(world));
       world.step(DT);
     }
     states.push(stateOf(world));
     let bounces = 0;
     for (let s = 0; s + AHEAD < states.length; s += 1) {
-      const restored = World.restore(snaps[s]!);
+      const restored = restoreWorld(snaps[s]!);
       for (let i = 0; i < AHEAD; i += 1) restored.step(DT);
       const d = firstDifference(stateOf(restored), states[s + AHEAD]!);
       if (d >= 0) expect.fail(`restored at step ${s}: differs ${AHEAD} steps later at Float64 ${d}`);
@@ -487,7 +490,7 @@ describe('snapshot at every step of a bounce', () => {
  */
 const KNOWN_FIELDS: Record<string, readonly string[]> = {
   Body: ['id', 'name', 'D', 'shape', 'materialValue', 'motion', 'massValue', 'invMass', 'inertia', 'invInertia', 'comOffset', 'storage', 'storageOffset', 'stateView', 'hasTorque', 'owner', 'proxyId', 'pose', 'sleeping', 'sleepTimer', 'poseDirty', 'worldIndex', 'solverSlot', 'jointPeers', 'jointCount', 'listeners', 'boundingRadius', 'xView', 'rView', 'vView', 'lView', 'wView', 'fView', 'tView'],
-  World: ['D', 'n', 'currentParams', 'gravityValue', 'bodyList', 'bodyView', 'stepState', 'scratch', 'constants', 'clock', 'broadphase', 'bodyOfProxy', 'narrowScratch', 'contacts', 'solverBodies', 'solver', 'islands', 'jointList', 'jointView', 'jointSolver', 'brokenJoints', 'jointOwner', 'reach', 'boundsStale', 'events', 'collisionEvent', 'setSleeping', 'owner', 'raySource'],
+  World: ['D', 'n', 'currentParams', 'gravityValue', 'bodyList', 'bodyView', 'stepState', 'scratch', 'constants', 'clock', 'broadphase', 'bodyOfProxy', 'narrowScratch', 'contacts', 'solverBodies', 'solver', 'islands', 'jointList', 'jointView', 'jointSolver', 'brokenJoints', 'jointOwner', 'reach', 'boundsStale', 'events', 'collisionEvent', 'setSleeping', 'owner'],
   ContactSet: ['n', 'pointCapacity', 'order', 'count', 'keys', 'bodyA', 'bodyB', 'manifolds', 'normalImpulse', 'approachSpeed', 'patchTangent', 'patchTwist', 'k', 'friction', 'restitution', 'flags', 'capacity', 'freeSlots', 'freeCount', 'orderNext', 'oldIds', 'oldNormal', 'oldApproach', 'oldPoints', 'oldTaken', 'newMatched', 'cache', 'reuseNumbers'],
   ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
   TreeBroadphase: ['n', 'margin', 'pairs', 'pairCount', 'addedPairs', 'addedCount', 'removedPairs', 'removedCount', 'stats', 'capacity', 'flags', 'tightMin', 'tightMax', 'fatMin', 'fatMax', 'planeNormal', 'planeOffset', 'highWater', 'moved', 'movedCount', 'halfSpaces', 'halfSpaceCount', 'freeIds', 'freeCount', 'liveCount', 'keys', 'keyCount', 'keysNext', 'cand', 'candCount', 'dropped', 'droppedCount', 'qMin', 'qMax', 'rayO', 'rayD', 'shift', 'incremental', 'tree', 'leafOf'],
@@ -534,45 +537,45 @@ describe('the snapshot code knows every field', () => {
 describe('restore refuses bad bytes, naming the argument', () => {
   const { world } = richScene(3);
   world.step(DT);
-  const good = world.snapshot();
+  const good = snapshotWorld(world);
 
   it('accepts the good bytes, also as a view into a larger buffer at any alignment', () => {
     for (const offset of [8, 1, 2, 3]) {
       const big = new Uint8Array(good.length + 16);
       big.set(good, offset);
-      const restored = World.restore(big.subarray(offset, offset + good.length));
-      expectSameBytes(restored.snapshot(), good, `restored from a view at offset ${offset}`);
+      const restored = restoreWorld(big.subarray(offset, offset + good.length));
+      expectSameBytes(snapshotWorld(restored), good, `restored from a view at offset ${offset}`);
     }
   });
 
   it('TypeError for a value that is not a Uint8Array', () => {
     for (const bad of [null, undefined, 'bytes', [1, 2, 3], good.buffer, new Float64Array(4)]) {
-      expect(() => World.restore(bad as unknown as Uint8Array)).toThrow(TypeError);
-      expect(() => World.restore(bad as unknown as Uint8Array)).toThrow(/'bytes'/);
+      expect(() => restoreWorld(bad as unknown as Uint8Array)).toThrow(TypeError);
+      expect(() => restoreWorld(bad as unknown as Uint8Array)).toThrow(/'bytes'/);
     }
   });
 
   it('RangeError for a truncated buffer, at any length', () => {
     for (const length of [0, 3, 15, 16, 100, good.length >> 1, good.length - 1]) {
-      expect(() => World.restore(good.slice(0, length)), `length ${length}`).toThrow(RangeError);
-      expect(() => World.restore(good.slice(0, length)), `length ${length}`).toThrow(/'bytes' is truncated/);
+      expect(() => restoreWorld(good.slice(0, length)), `length ${length}`).toThrow(RangeError);
+      expect(() => restoreWorld(good.slice(0, length)), `length ${length}`).toThrow(/'bytes' is truncated/);
     }
   });
 
   it('RangeError for a foreign buffer, a damaged one, extra bytes and another version', () => {
     const foreign = new Uint8Array(256).map((_, i) => (i * 37) & 255);
-    expect(() => World.restore(foreign)).toThrow(/'bytes' is not a PhysiN world snapshot/);
+    expect(() => restoreWorld(foreign)).toThrow(/'bytes' is not a PhysiN world snapshot/);
     const damaged = good.slice();
     damaged[good.length >> 1] ^= 1;
-    expect(() => World.restore(damaged)).toThrow(RangeError);
-    expect(() => World.restore(damaged)).toThrow(/'bytes' is damaged/);
+    expect(() => restoreWorld(damaged)).toThrow(RangeError);
+    expect(() => restoreWorld(damaged)).toThrow(/'bytes' is damaged/);
     const longer = new Uint8Array(good.length + 4);
     longer.set(good);
-    expect(() => World.restore(longer)).toThrow(/'bytes' has 4 bytes past the end/);
+    expect(() => restoreWorld(longer)).toThrow(/'bytes' has 4 bytes past the end/);
     const other = good.slice();
     new DataView(other.buffer).setUint32(4, 2, true);
-    expect(() => World.restore(other)).toThrow(RangeError);
-    expect(() => World.restore(other)).toThrow(/'bytes' is a snapshot of format version 2; this build reads version 1/);
+    expect(() => restoreWorld(other)).toThrow(RangeError);
+    expect(() => restoreWorld(other)).toThrow(/'bytes' is a snapshot of format version 2; this build reads version 1/);
   });
 
   it('RangeError naming bytes for a well-framed snapshot whose contents are inconsistent', async () => {
@@ -581,7 +584,7 @@ describe('restore refuses bad bytes, naming the argument', () => {
     const bad = good.slice();
     bad[16] = 9;
     new DataView(bad.buffer).setUint32(12, fnv1a(bad, 16, bad.length), true);
-    expect(() => World.restore(bad)).toThrow(/'bytes' is not a valid snapshot: the dimension is 9/);
+    expect(() => restoreWorld(bad)).toThrow(/'bytes' is not a valid snapshot: the dimension is 9/);
     // A huge shape count fails at once (no allocation of its items): find the count after the
     // parameters, gravity, clock and flag, and set it to 2^25.
     const view = new DataView(good.buffer);
@@ -597,7 +600,7 @@ describe('restore refuses bad bytes, naming the argument', () => {
     const huge = good.slice();
     new DataView(huge.buffer).setUint32(at, 1 << 25, true);
     new DataView(huge.buffer).setUint32(12, fnv1a(huge, 16, huge.length), true);
-    expect(() => World.restore(huge)).toThrow(/'bytes' is truncated: the shape count is 33554432/);
+    expect(() => restoreWorld(huge)).toThrow(/'bytes' is truncated: the shape count is 33554432/);
   });
 });
 
@@ -607,7 +610,7 @@ describe('snapshot refuses what it cannot rebuild', () => {
     const D = world.D;
     const box = HyperBox(D, [0.5, 0.5, 0.5]);
     world.addBody(new Body(D, { shape: { ...box, kind: 'capsule' } as unknown as typeof box, mass: 1 }));
-    expect(() => world.snapshot()).toThrow(/shape of kind 'capsule'/);
+    expect(() => snapshotWorld(world)).toThrow(/shape of kind 'capsule'/);
   });
 
   it('a joint class it does not know is named (a subclass would come back as its base class)', () => {
@@ -616,6 +619,6 @@ describe('snapshot refuses what it cannot rebuild', () => {
     const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1 }));
     class TetherJoint extends PointJoint {}
     world.addConstraint(new TetherJoint(a, null, [0, 0, 0], [0, 1, 0]));
-    expect(() => world.snapshot()).toThrow(/a joint of type TetherJoint is not supported/);
+    expect(() => snapshotWorld(world)).toThrow(/a joint of type TetherJoint is not supported/);
   });
 });

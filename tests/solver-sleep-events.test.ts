@@ -10,7 +10,7 @@
  *   body and a normal from themselves to it; removeEventListener stops the calls.
  */
 import { describe, expect, it } from 'vitest';
-import { Body, dims, HalfSpace, HyperBox, HyperSphere, World } from '@physin/engine';
+import { Body, dims, HalfSpace, HyperBox, HyperSphere, World, castRay, queryBox } from '@physin/engine';
 import type { CollisionEvent } from '@physin/engine';
 
 const G = 9.81;
@@ -112,13 +112,13 @@ describe('sleep', () => {
     run(world, 4);
     expect(boxes.every((b) => b.isSleeping)).toBe(true);
     const top = boxes[2]!;
-    const hit = world.rayCast([0, 5, 0], [0, -1, 0], 10);
+    const hit = castRay(world, [0, 5, 0], [0, -1, 0], 10);
     expect(hit).not.toBeNull();
     expect(hit!.body).toBe(top);
     expect(Math.abs(hit!.distance - (5 - (top.x[1]! + 0.25)))).toBeLessThanOrEqual(1e-9);
-    const side = world.rayCast([-3, boxes[0]!.x[1]!, 0], [1, 0, 0], 10);
+    const side = castRay(world, [-3, boxes[0]!.x[1]!, 0], [1, 0, 0], 10);
     expect(side!.body).toBe(boxes[0]);
-    const found = world.queryBox([-1, -1, -1], [1, 2, 1]);
+    const found = queryBox(world, [-1, -1, -1], [1, 2, 1]);
     expect(found.length).toBe(4);
     for (const b of boxes) expect(b.isSleeping).toBe(true);
     const before = boxes.map(state);

@@ -5,7 +5,7 @@
  * boxes of seeded random scenes; bad arguments throw and change nothing.
  */
 import { describe, expect, it } from 'vitest';
-import { Body, ConvexMesh, dims, HalfSpace, HyperBox, HyperSphere, HyperTorus, World } from '@physin/engine';
+import { Body, ConvexMesh, dims, HalfSpace, HyperBox, HyperSphere, HyperTorus, World, castRay, queryBox } from '@physin/engine';
 import type { ConvexMeshShape, Dims, Shape } from '@physin/engine';
 import { randomArray, randomUnitVector, seeded, uniform } from './support/random.js';
 
@@ -113,7 +113,7 @@ function rayTo(rand: () => number, p: Float64Array, N: Float64Array): { origin: 
 function expectHit(world: World, origin: Float64Array, dir: Float64Array, t: number, body: Body, ex: Expected, tol: number): void {
   // scale the direction: rayCast normalises it
   const scaled = dir.map((x) => 2.5 * x);
-  const hit = world.rayCast(origin, scaled, t + 10);
+  const hit = castRay(world, origin, scaled, t + 10);
   expect(hit).not.toBeNull();
   expect(hit!.body).toBe(body);
   expect(Math.abs(hit!.distance - t)).toBeLessThanOrEqual(tol);
@@ -266,27 +266,27 @@ describe('world.rayCast over several bodies', () => {
       for (const i of [5, 2, 7, 0, 3, 6, 1, 4]) world.addBody(balls[i]!.body);
       // plus a half-space far behind the origin
       world.addBody(new Body(D, { shape: HalfSpace(D, dir, -50), mass: 0 })); // far behind the origin
-      const hit = world.rayCast(origin, dir, 100);
+      const hit = castRay(world, origin, dir, 100);
       expect(hit!.body).toBe(balls[0]!.body);
       expect(Math.abs(hit!.distance - balls[0]!.t)).toBeLessThanOrEqual(TOL);
       expect(maxDiff(hit!.normal, dir.map((c) => -c))).toBeLessThanOrEqual(TOL);
       // cut-off just before and just after the first hit
-      expect(world.rayCast(origin, dir, balls[0]!.t - 1e-6)).toBeNull();
-      expect(world.rayCast(origin, dir, balls[0]!.t + 1e-6)!.body).toBe(balls[0]!.body);
-      expect(world.rayCast(origin, dir, 0)).toBeNull();
+      expect(castRay(world, origin, dir, balls[0]!.t - 1e-6)).toBeNull();
+      expect(castRay(world, origin, dir, balls[0]!.t + 1e-6)!.body).toBe(balls[0]!.body);
+      expect(castRay(world, origin, dir, 0)).toBeNull();
       // from just past ball 2 toward ball 3
       const from = axpy(origin, balls[2]!.t + 2 * balls[2]!.rho + 0.05, dir);
-      const next = world.rayCast(from, dir, 100)!;
+      const next = castRay(world, from, dir, 100)!;
       expect(next.body).toBe(balls[3]!.body);
       expect(Math.abs(next.distance - (balls[3]!.t - (balls[2]!.t + 2 * balls[2]!.rho + 0.05)))).toBeLessThanOrEqual(TOL);
       // pointing away: only the half-space far behind, which it never reaches going forward...
-      expect(world.rayCast(origin, dir.map((c) => -c), 40)).toBeNull();
+      expect(castRay(world, origin, dir.map((c) => -c), 40)).toBeNull();
       // ...but a long enough ray does reach it: distance 50 + origin·dir
-      const back = world.rayCast(origin, dir.map((c) => -c), 100)!;
+      const back = castRay(world, origin, dir.map((c) => -c), 100)!;
       expect(Math.abs(back.distance - (50 + dot(dir, origin)))).toBeLessThanOrEqual(TOL);
       // starting inside ball 4: distance 0 at the origin
       const inside = axpy(origin, balls[4]!.t + balls[4]!.rho * 0.5, dir);
-      const hit0 = world.rayCast(inside, randomUnitVector(rand, n), 10)!;
+      const hit0 = castRay(world, inside, randomUnitVector(rand, n), 10)!;
       expect(hit0.body).toBe(balls[4]!.body);
       expect(hit0.distance).toBe(0);
       expect(maxDiff(hit0.point, inside)).toBeLessThanOrEqual(TOL);
@@ -307,29 +307,29 @@ describe('world.rayCast over several bodies', () => {
       down[1] = -1;
       const above = new Array<number>(n).fill(0);
       above[1] = 20;
-      expect(world.rayCast(above, down, 100)!.distance).toBeCloseTo(20 - 10.5, 12);
+      expect(castRay(world, above, down, 100)!.distance).toBeCloseTo(20 - 10.5, 12);
       for (let i = 0; i < 45; i += 1) world.step(1 / 60);
       expect(ball.x[1]!).toBeLessThan(8); // fell 10 − g h² N(N+1)/2 = 7.18
-      let hit = world.rayCast(above, down, 100)!;
+      let hit = castRay(world, above, down, 100)!;
       expect(hit.body).toBe(ball);
       expect(Math.abs(hit.distance - (20 - ball.x[1]! - 0.5))).toBeLessThanOrEqual(TOL);
       // the old place is empty now: a ray ending above the ball's top misses
-      expect(world.rayCast(above, down, 20 - ball.x[1]! - 0.5 - 1e-6)).toBeNull();
+      expect(castRay(world, above, down, 20 - ball.x[1]! - 0.5 - 1e-6)).toBeNull();
       const aboveBox = above.map((c, k) => (k === 0 ? 5 : c));
-      hit = world.rayCast(aboveBox, down, 100)!;
+      hit = castRay(world, aboveBox, down, 100)!;
       expect(hit.body).toBe(box);
       expect(Math.abs(hit.distance - (20 - box.x[1]! - 0.5))).toBeLessThanOrEqual(TOL);
       // moved by hand (no step since)
       const moved = new Array<number>(n).fill(0);
       moved[1] = 3;
       ball.setPositionN(moved);
-      hit = world.rayCast(above, down, 100)!;
+      hit = castRay(world, above, down, 100)!;
       expect(Math.abs(hit.distance - (20 - 3.5))).toBeLessThanOrEqual(TOL);
       // queryBox sees it there too
-      expect(world.queryBox(moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([ball]);
+      expect(queryBox(world, moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([ball]);
       world.removeBody(ball);
-      expect(world.rayCast(above, down, 100)).toBeNull();
-      expect(world.queryBox(moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([]);
+      expect(castRay(world, above, down, 100)).toBeNull();
+      expect(queryBox(world, moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([]);
     });
   }
 });
@@ -466,7 +466,7 @@ describe('world.queryBox', () => {
           const half = randomArray(rand, n, 0, q % 3 === 0 ? 3 : 0.8);
           const min = c.map((v, k) => v - half[k]!);
           const max = c.map((v, k) => v + half[k]!);
-          const got = world.queryBox(min, max);
+          const got = queryBox(world, min, max);
           const want = bruteQuery(world, min, max);
           expect(got).toEqual(want);
           for (let i = 1; i < got.length; i += 1) expect(world.bodies.indexOf(got[i]!)).toBeGreaterThan(world.bodies.indexOf(got[i - 1]!));
@@ -489,12 +489,12 @@ describe('world.queryBox', () => {
     const world = new World({ dimensions: n });
     const box = world.addBody(new Body(D, { shape: HyperBox(D, [1, 0.5, 0.25]), mass: 1, position: [2, 0, 0] }));
     const floor = world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], -3), mass: 0 }));
-    expect(world.queryBox([3, 0, 0], [4, 1, 1])).toEqual([box]);
-    expect(world.queryBox([3 + 1e-9, 0, 0], [4, 1, 1])).toEqual([]);
-    expect(world.queryBox([10, -5, 0], [11, -3, 0])).toEqual([floor]);
-    expect(world.queryBox([10, -3 + 1e-9, 0], [11, 0, 0])).toEqual([]);
+    expect(queryBox(world, [3, 0, 0], [4, 1, 1])).toEqual([box]);
+    expect(queryBox(world, [3 + 1e-9, 0, 0], [4, 1, 1])).toEqual([]);
+    expect(queryBox(world, [10, -5, 0], [11, -3, 0])).toEqual([floor]);
+    expect(queryBox(world, [10, -3 + 1e-9, 0], [11, 0, 0])).toEqual([]);
     // a degenerate (point) query inside the box
-    expect(world.queryBox([2, 0, 0], [2, 0, 0])).toEqual([box]);
+    expect(queryBox(world, [2, 0, 0], [2, 0, 0])).toEqual([box]);
   });
 });
 
@@ -513,10 +513,10 @@ describe('bad arguments throw and change nothing', () => {
       const o = new Array<number>(n).fill(0);
       const d = new Array<number>(n).fill(0);
       d[0] = 1;
-      const reference = world.rayCast(o, d, 50);
+      const reference = castRay(world, o, d, 50);
       const lo = new Array<number>(n).fill(-2);
       const hi = new Array<number>(n).fill(2);
-      const refQuery = world.queryBox(lo, hi);
+      const refQuery = queryBox(world, lo, hi);
 
       const expectBad = (f: () => unknown, kind?: typeof TypeError | typeof RangeError): void => {
         let error: unknown = null;
@@ -528,27 +528,27 @@ describe('bad arguments throw and change nothing', () => {
         expect(error instanceof TypeError || error instanceof RangeError).toBe(true);
         if (kind) expect(error).toBeInstanceOf(kind);
       };
-      expectBad(() => world.rayCast(o.slice(1), d, 10));
-      expectBad(() => world.rayCast([...o, 0], d, 10));
-      expectBad(() => world.rayCast(o, d.slice(1), 10));
-      expectBad(() => world.rayCast(o, new Array(n).fill(0), 10), RangeError);
-      expectBad(() => world.rayCast(o, d.map((c, k) => (k === 1 ? NaN : c)), 10));
-      expectBad(() => world.rayCast(o.map(() => Infinity), d, 10));
-      expectBad(() => world.rayCast(o, d, -1), RangeError);
-      expectBad(() => world.rayCast(o, d, NaN));
-      expectBad(() => world.rayCast(o, d, '10' as unknown as number), TypeError);
-      expectBad(() => world.rayCast(null as unknown as number[], d, 10), TypeError);
-      expectBad(() => world.queryBox(lo.slice(1), hi));
-      expectBad(() => world.queryBox(lo, [...hi, 0]));
-      expectBad(() => world.queryBox(hi, lo), RangeError);
-      expectBad(() => world.queryBox(lo.map((c, k) => (k === n - 1 ? 3 : c)), hi), RangeError);
-      expectBad(() => world.queryBox(lo.map(() => NaN), hi));
-      expectBad(() => world.queryBox('ab' as unknown as number[], hi), TypeError);
+      expectBad(() => castRay(world, o.slice(1), d, 10));
+      expectBad(() => castRay(world, [...o, 0], d, 10));
+      expectBad(() => castRay(world, o, d.slice(1), 10));
+      expectBad(() => castRay(world, o, new Array(n).fill(0), 10), RangeError);
+      expectBad(() => castRay(world, o, d.map((c, k) => (k === 1 ? NaN : c)), 10));
+      expectBad(() => castRay(world, o.map(() => Infinity), d, 10));
+      expectBad(() => castRay(world, o, d, -1), RangeError);
+      expectBad(() => castRay(world, o, d, NaN));
+      expectBad(() => castRay(world, o, d, '10' as unknown as number), TypeError);
+      expectBad(() => castRay(world, null as unknown as number[], d, 10), TypeError);
+      expectBad(() => queryBox(world, lo.slice(1), hi));
+      expectBad(() => queryBox(world, lo, [...hi, 0]));
+      expectBad(() => queryBox(world, hi, lo), RangeError);
+      expectBad(() => queryBox(world, lo.map((c, k) => (k === n - 1 ? 3 : c)), hi), RangeError);
+      expectBad(() => queryBox(world, lo.map(() => NaN), hi));
+      expectBad(() => queryBox(world, 'ab' as unknown as number[], hi), TypeError);
 
       expect(snapshot(world)).toBe(before);
-      const again = world.rayCast(o, d, 50);
+      const again = castRay(world, o, d, 50);
       expect(again === null ? null : [again.body, again.distance]).toEqual(reference === null ? null : [reference.body, reference.distance]);
-      expect(world.queryBox(lo, hi)).toEqual(refQuery);
+      expect(queryBox(world, lo, hi)).toEqual(refQuery);
     });
   }
 });

@@ -8,14 +8,12 @@ import type { Dims } from '@physin/algebra';
 import { Body, MOTION_STATIC } from './body.js';
 import type { BodyOwner } from './body.js';
 import { computeBoundsUnchecked } from './collision/bounds.js';
-import { createBroadphase } from './collision/broadphase.js';
+import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
 import { createPose } from './collision/manifold.js';
 import { createNarrowphaseScratch } from './collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
-import { createIdList, createRayCastResult, queryOverlap, rayCastClosest } from './collision/query.js';
-import type { RayCastSource } from './collision/query.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import { ContactEvents } from './contacts/contact-events.js';
 import type { CollisionEvent } from './contacts/contact-events.js';
@@ -44,13 +42,10 @@ import {
   STEP_ROTOR_TOLERANCE,
 } from './integrator/step-constants.js';
 import { integrateVelocities } from './integrator/velocities.js';
-import { Joint } from './joints/joint.js';
-import type { JointOwner } from './joints/joint.js';
-import { JointSolver } from './joints/joint-solver.js';
+import type { Joint, JointOwner } from './joints/joint.js';
+import type { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams } from './params.js';
 import type { Params } from './params.js';
-import { readWorldSnapshot } from './snapshot/read-world.js';
-import { writeWorldSnapshot } from './snapshot/write-world.js';
 import type { WorldParts } from './snapshot/world-parts.js';
 
 /** Options of `new World(options)`. */
@@ -107,22 +102,15 @@ function robustNormInto(out: Float64Array, slot: number, a: Float64Array): void 
   out[slot] = big * Math.sqrt(s);
 }
 
-/** The first hit of {@link World.rayCast}. */
-export interface WorldRayHit {
-  /** The body hit. */
-  readonly body: Body;
-  /** Where the ray meets its surface (world, n numbers). */
-  readonly point: Float64Array;
-  /** The outward unit normal of the surface there (n numbers). */
-  readonly normal: Float64Array;
-  /** Distance from the origin along the normalised direction (m). */
-  readonly distance: number;
-}
-
 /** Passes of the joints' position projection per sub-step (see JointSolver.solvePositions). */
 const JOINT_POSITION_ITERATIONS = 3;
 
 const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
+
+/** Whether `value` is a joint (the world does not import the Joint class: see Joint.createSolver). */
+function isJoint(value: unknown): value is Joint {
+  return typeof value === 'object' && value !== null && typeof (value as Joint).createSolver === 'function' && typeof (value as Joint).buildRows === 'function';
+}
 
 /** Throws the error of a bad `dt` (TypeError if not a number, RangeError otherwise). */
 function throwBadTimeStep(dt: unknown): never {
@@ -166,7 +154,8 @@ export class World {
   // ---- joints (see docs/joints.md) ----
   private readonly jointList: Joint[] = [];
   private jointView: readonly Joint[] = Object.freeze([]);
-  private readonly jointSolver: JointSolver;
+  /** Made by the first joint added (Joint.createSolver), so a world without joints never loads it. */
+  private jointSolver: JointSolver | null = null;
   /** Joints that broke in this step, their events sent after it. */
   private readonly brokenJoints: Joint[] = [];
   private readonly jointOwner: JointOwner = {
@@ -200,11 +189,6 @@ export class World {
     onMaterialChanged: (body: Body): void => {
       this.contacts.refreshMaterial(body);
     },
-  };
-  private readonly raySource: RayCastSource = {
-    shapeOf: (id) => this.bodyOfProxy[id]!.shape as unknown as QueryShape,
-    positionOf: (id) => this.bodyOfProxy[id]!.pose!.x,
-    rotationOf: (id) => this.bodyOfProxy[id]!.pose!.M,
   };
 
   /**
@@ -240,12 +224,11 @@ export class World {
       speeds: new Float64Array(2),
     };
     this.constants = createStepConstants();
-    this.broadphase = createBroadphase(D.n);
+    this.broadphase = new TreeBroadphase(D.n);
     this.narrowScratch = createNarrowphaseScratch(D.n);
     this.contacts = new ContactSet(D.n);
     this.solverBodies = new SolverBodies(D);
     this.solver = new ContactSolver(D);
-    this.jointSolver = new JointSolver(D);
     this.events = new ContactEvents(D.n);
     this.collisionEvent = {
       type: 'begin',
@@ -413,7 +396,7 @@ export class World {
    */
   addConstraint<J extends Joint>(joint: J): J {
     const fn = 'World.addConstraint';
-    if (!(joint instanceof Joint)) {
+    if (!isJoint(joint)) {
       throw new TypeError(`${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`);
     }
     if (joint.D.n !== this.n) {
@@ -428,6 +411,7 @@ export class World {
     if (joint.b !== null && joint.b.owner !== this.owner) {
       throw new RangeError(`${fn}: body 'b' (${joint.b.label}) of the joint is not in this world; add it first (World.addBody)`);
     }
+    this.jointSolver ??= joint.createSolver(this.D);
     joint.owner = this.jointOwner;
     joint.lambda.fill(0);
     this.jointList.push(joint);
@@ -444,7 +428,7 @@ export class World {
    */
   removeConstraint(joint: Joint): this {
     const fn = 'World.removeConstraint';
-    if (!(joint instanceof Joint)) {
+    if (!isJoint(joint)) {
       throw new TypeError(`${fn}: argument 'joint' must be a joint, got ${joint === null ? 'null' : typeof joint}`);
     }
     const index = joint.owner === this.jointOwner ? this.jointList.indexOf(joint) : -1;
@@ -532,10 +516,11 @@ export class World {
       const bp = this.broadphase as BroadphaseBase;
       this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax);
       this.solveContacts(p);
-      if (this.jointSolver.brokenCount > 0) this.breakJoints();
+      const js = this.jointSolver;
+      if (js !== null && js.brokenCount > 0) this.breakJoints(js);
       const bad = integratePositions(D, bodies, c, this.scratch.rotor);
       if (bad >= 0) this.failStep(bodies[bad]!, s, subSteps);
-      if (this.jointSolver.count > 0) this.jointSolver.solvePositions(this.solverBodies, JOINT_POSITION_ITERATIONS);
+      if (js !== null && js.count > 0) js.solvePositions(this.solverBodies, JOINT_POSITION_ITERATIONS);
       for (let b = 0; b < bodies.length; b += 1) {
         const body = bodies[b]!;
         if (body.motion !== MOTION_STATIC && !body.sleeping) this.updatePose(body);
@@ -554,39 +539,7 @@ export class World {
     return this;
   }
 
-  // ---- snapshots (see snapshot/ and docs/engine.md, "Snapshots") ----
-
-  /**
-   * The whole state a step reads, as bytes: dimension, parameters, gravity, time and step count,
-   * the shapes, every body (its full state, mass, material, sleep state), every joint (options,
-   * anchors, accumulated impulses), the contacts with their warm-start impulses and cached
-   * manifolds, the broadphase's pair bookkeeping and the end events pending for the next step.
-   * {@link World.restore} rebuilds a world from it that continues bit-identically: every Float64
-   * of every body after any number of steps is the same as the original's. Taking a snapshot
-   * changes nothing in the world. The array owns its whole buffer (byteOffset 0, exact length),
-   * so it can be transferred to a worker as it is.
-   *
-   * Not saved: listeners (functions), and the events of the last step (`contactEvents` of a
-   * restored world is empty until its first step).
-   *
-   * @throws Error if a body has a shape kind the snapshot code does not know (it names the kind).
-   */
-  snapshot(): Uint8Array {
-    return writeWorldSnapshot(this, this.snapshotParts());
-  }
-
-  /**
-   * Rebuilds a world from the bytes of {@link World.snapshot}. Its bodies and joints are new
-   * objects, in the same order as in the original: `restored.bodies[i]` is the copy of
-   * `original.bodies[i]`, `restored.constraints[j]` of `original.constraints[j]` (ids differ: they
-   * are unique per process).
-   *
-   * @throws TypeError if `bytes` is not a Uint8Array; RangeError, naming 'bytes', if it is
-   *   truncated, foreign, of another format version, damaged, or inconsistent.
-   */
-  static restore(bytes: Uint8Array): World {
-    return readWorldSnapshot(bytes, (options) => new World(options));
-  }
+  // ---- snapshots: snapshotWorld / restoreWorld (snapshot/snapshot.ts, docs/engine.md) ----
 
   /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
   snapshotParts(): WorldParts {
@@ -717,10 +670,10 @@ export class World {
     const points = solver.prepare(this.contacts, sb, this.constants, p);
     // With no joint left, nothing of the last prepare may be solved again (solvePositions reads
     // joints.count): a world whose last joint was removed hung in its next step.
-    if (this.jointList.length === 0) joints.count = 0;
-    const jointCount = this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
-    if (jointCount === 0) {
-      joints.brokenCount = 0;
+    if (joints !== null && this.jointList.length === 0) joints.count = 0;
+    const jointCount = joints !== null && this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
+    if (joints === null || jointCount === 0) {
+      if (joints !== null) joints.brokenCount = 0;
       if (points === 0) return;
       if (p.useWarmStart) solver.warmStart(sb);
       solver.solve(sb, p.iterations);
@@ -744,8 +697,7 @@ export class World {
   }
 
   /** The joints the solver found over their break load leave the world (events after the step). */
-  private breakJoints(): void {
-    const js = this.jointSolver;
+  private breakJoints(js: JointSolver): void {
     for (let i = 0; i < js.brokenCount; i += 1) {
       const joint = js.broken[i]!;
       const index = this.jointList.indexOf(joint);
@@ -842,53 +794,15 @@ export class World {
     this.boundsStale = false;
   }
 
-  // ---- queries ----
+  // ---- queries: castRay / queryBox (queries.ts) ----
 
   /**
-   * The first body hit by the ray origin + t·d̂, t in [0, maxDistance] (d̂ = direction
-   * normalised), or null. Every shape counts as solid: a ray that starts inside a body hits it at
-   * distance 0. Sleeping bodies are found and stay asleep. A user-level query: it allocates its
-   * result.
-   *
-   * @throws TypeError / RangeError for an origin or direction of the wrong length or non-finite,
-   *   a zero direction, or a negative or non-finite maxDistance.
+   * @internal For the queries of queries.ts: the broadphase with every box brought up to the
+   * bodies' poses, and the body of each proxy id.
    */
-  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
-    const fn = 'World.rayCast';
-    checkVector(this.D, 'origin', origin, fn);
-    checkVector(this.D, 'direction', direction, fn);
-    let len = 0;
-    for (let i = 0; i < this.n; i += 1) len += direction[i]! * direction[i]!;
-    if (!(len > 0)) throw new RangeError(`${fn}: argument 'direction' must be a non-zero vector`);
-    checkNumber('maxDistance', maxDistance, fn);
-    if (!(maxDistance >= 0)) throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
+  queryParts(): { readonly broadphase: Broadphase; readonly bodyOfProxy: readonly (Body | null)[] } {
     this.refreshBounds();
-    const out = createRayCastResult(this.n);
-    const id = rayCastClosest(this.broadphase, this.raySource, origin, direction, maxDistance, out);
-    if (id < 0) return null;
-    return { body: this.bodyOfProxy[id]!, point: out.point, normal: out.normal, distance: out.distance };
-  }
-
-  /**
-   * The bodies whose bounding boxes overlap the box [min, max] (closed intervals; half-spaces
-   * when the box reaches their solid side), in the order they were added. Sleeping bodies count.
-   *
-   * @throws TypeError / RangeError for bounds of the wrong length, non-finite, or min > max.
-   */
-  queryBox(min: ArrayLike<number>, max: ArrayLike<number>): Body[] {
-    const fn = 'World.queryBox';
-    checkVector(this.D, 'min', min, fn);
-    checkVector(this.D, 'max', max, fn);
-    for (let i = 0; i < this.n; i += 1) {
-      if (min[i]! > max[i]!) throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
-    }
-    this.refreshBounds();
-    const list = createIdList();
-    queryOverlap(this.broadphase, min, max, list);
-    const found: Body[] = [];
-    for (let i = 0; i < list.count; i += 1) found.push(this.bodyOfProxy[list.ids[i]!]!);
-    found.sort((a, b) => a.worldIndex - b.worldIndex);
-    return found;
+    return { broadphase: this.broadphase, bodyOfProxy: this.bodyOfProxy };
   }
 
   /** Undoes the current step and throws the error that names the body. */

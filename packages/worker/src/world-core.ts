@@ -6,7 +6,7 @@
  *
  * @module
  */
-import { World } from '@physin/engine';
+import { World, restoreWorld, snapshotWorld } from '@physin/engine';
 import type { Body, Joint } from '@physin/engine';
 import type { Dims, WorldOptions } from '@physin/engine';
 import { runCommand } from './commands.js';
@@ -323,9 +323,9 @@ export class WorldCore implements CommandTarget {
     }
   }
 
-  /** The world and its ids as bytes: a small header, the ids in world order, then `World.snapshot()`. */
+  /** The world and its ids as bytes: a small header, the ids in world order, then `snapshotWorld(world)`. */
   snapshot(): Uint8Array {
-    const world = this.world.snapshot();
+    const world = snapshotWorld(this.world);
     const bodies = this.world.bodies;
     const joints = this.world.constraints;
     const head = 24 + 4 * (bodies.length + joints.length);
@@ -362,7 +362,7 @@ export class WorldCore implements CommandTarget {
     const nj = view.getUint32(20, true);
     const head = 24 + 4 * (nb + nj);
     if (bytes.length < head) throw new RangeError(`${where}: argument 'bytes' is truncated`);
-    const core = new WorldCore(World.restore(bytes.subarray(head)));
+    const core = new WorldCore(restoreWorld(bytes.subarray(head)));
     core.accumulator = view.getFloat64(8, true);
     const bodies = core.world.bodies;
     const joints = core.world.constraints;

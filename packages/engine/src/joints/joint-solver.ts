@@ -40,7 +40,7 @@ import type { SolverBodies } from '../solver/solver-bodies.js';
 import { bivectorRotationInto, reverseInto } from './frames.js';
 import { JointTree } from './joint-tree.js';
 import type { Joint } from './joint.js';
-import { JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_DAMPING, JS_FORCE, JS_H, JS_HERTZ, JS_TORQUE } from './joint.js';
+import { JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_DAMPING, JS_FORCE, JS_H, JS_HERTZ, JS_TORQUE } from './joint-slots.js';
 import { SOFT_BIAS_RATE, SOFT_COUNT, SOFT_DAMPING, SOFT_H, SOFT_HERTZ, SOFT_IMPULSE_SCALE, SOFT_MASS_SCALE, softStep } from './soft.js';
 
 /** Row kind: linear (counts toward breakForce). */

@@ -11,7 +11,7 @@
 import type { Dims } from '@physin/algebra';
 import { Body, MOTION_STATIC } from '../body.js';
 import { checkJointOptionNames, readBoolean, readNonNegative, readVector } from './options.js';
-import type { JointSolver } from './joint-solver.js';
+import { JointSolver } from './joint-solver.js';
 
 /** The options every joint takes. */
 export interface JointOptions {
@@ -52,22 +52,8 @@ export interface JointOwner {
   onJointChanged(joint: Joint): void;
 }
 
-/** @internal Indices of `Joint.state` (per-joint doubles the step reads and writes). */
-export const JS_HERTZ = 0;
-/** @internal Damping ratio, or NaN for the world's default. */
-export const JS_DAMPING = 1;
-/** @internal Break force (N), 0 = never. */
-export const JS_BREAK_FORCE = 2;
-/** @internal Break torque (N·m), 0 = never. */
-export const JS_BREAK_TORQUE = 3;
-/** @internal |λ_linear| / h of the last sub-step (N). */
-export const JS_FORCE = 4;
-/** @internal |λ_angular (no motor)| / h of the last sub-step (N·m). */
-export const JS_TORQUE = 5;
-/** @internal The sub-step h of the last solve (s). */
-export const JS_H = 6;
-/** @internal First index free for the joint types. */
-export const JS_COMMON_COUNT = 7;
+export { JS_HERTZ, JS_DAMPING, JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_FORCE, JS_TORQUE, JS_H, JS_COMMON_COUNT } from './joint-slots.js';
+import { JS_HERTZ, JS_DAMPING, JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_FORCE, JS_TORQUE, JS_COMMON_COUNT } from './joint-slots.js';
 
 let nextJointId = 1;
 
@@ -81,9 +67,9 @@ export abstract class Joint {
   readonly id: number;
   /** @internal The dimension tables. */
   readonly D: Dims;
-  /** @internal The first body. */
+  /** The first body. */
   readonly a: Body;
-  /** @internal The second body, or null for the world. */
+  /** The second body, or null for the world. */
   readonly b: Body | null;
   /** @internal Anchor on a, in a's frame (n numbers). */
   readonly anchorA: Float64Array;
@@ -305,6 +291,15 @@ export abstract class Joint {
 
   /** @internal Writes the rows of this sub-step (see {@link JointSolver}); `j` is the solver index. */
   abstract buildRows(js: JointSolver, j: number): void;
+
+  /**
+   * @internal The joint solver of a world, made when the world's first joint is added. The world
+   * reaches the solver through its joints and never imports it, so a scene without joints does
+   * not carry the solver in its bundle (docs/architecture.md).
+   */
+  createSolver(D: Dims): JointSolver {
+    return new JointSolver(D);
+  }
 
   /** @internal Hook: the anchors changed (setAnchors). */
   protected anchorsChanged(): void {}

@@ -11,7 +11,7 @@
  * ```
  *
  * Why a checksum: a buffer cut short, padded, or damaged in transit must fail with a clear
- * message at `World.restore`, not rebuild a world that quietly differs from the one saved.
+ * message at `restoreWorld`, not rebuild a world that quietly differs from the one saved.
  *
  * @module
  */

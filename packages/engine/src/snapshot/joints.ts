@@ -78,7 +78,7 @@ function classOf<C>(kind: number): C {
   const c = jointClass(NAMES[kind]!);
   if (typeof c !== 'function') {
     const name = `${NAMES[kind]![0]!.toUpperCase()}${NAMES[kind]!.slice(1)}Joint`;
-    throw new Error(`World.restore: the snapshot holds a ${name}, and this program never loaded it; reference ${name} from @physin/engine before restoring`);
+    throw new Error(`restoreWorld: the snapshot holds a ${name}, and this program never loaded it; reference ${name} from @physin/engine before restoring`);
   }
   return c as C;
 }
@@ -172,7 +172,7 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
         });
     }
   } catch (error) {
-    if (error instanceof Error && error.message.startsWith('World.restore')) throw error;
+    if (error instanceof Error && error.message.startsWith('restoreWorld')) throw error;
     return r.fail(`a joint cannot be rebuilt (${(error as Error).message})`);
   }
   if (joint.state.length !== state.length || joint.lambda.length !== lambda.length) r.fail('a joint has arrays of the wrong length');

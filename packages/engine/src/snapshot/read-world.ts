@@ -1,5 +1,5 @@
 /**
- * `World.restore(bytes)`: a new world from the bytes of `world.snapshot()`.
+ * `restoreWorld(bytes)`: a new world from the bytes of `snapshotWorld(world)`.
  *
  * The world is built through its public calls where they do exactly what the original did (the
  * constructor with the saved dimension, gravity and parameters; addBody in the saved order;

@@ -8,7 +8,7 @@
 import { fnv1a, SNAPSHOT_HEADER_BYTES, SNAPSHOT_MAGIC, SNAPSHOT_VERSION } from './format.js';
 
 const decoder = new TextDecoder('utf-8', { fatal: true });
-const FN = 'World.restore';
+const FN = 'restoreWorld';
 
 /** Reads the fields of a snapshot written by SnapshotWriter, in the same order. */
 export class SnapshotReader {
@@ -24,7 +24,7 @@ export class SnapshotReader {
   constructor(bytes: unknown) {
     if (!(bytes instanceof Uint8Array)) {
       const got = bytes === null ? 'null' : typeof bytes === 'object' ? (bytes as object).constructor?.name ?? 'object' : typeof bytes;
-      throw new TypeError(`${FN}: argument 'bytes' must be a Uint8Array (from world.snapshot()), got ${got}`);
+      throw new TypeError(`${FN}: argument 'bytes' must be a Uint8Array (from snapshotWorld(world)), got ${got}`);
     }
     if (bytes.length < SNAPSHOT_HEADER_BYTES) {
       throw new RangeError(`${FN}: argument 'bytes' is truncated: ${bytes.length} bytes, shorter than the ${SNAPSHOT_HEADER_BYTES}-byte snapshot header`);

@@ -14,7 +14,7 @@
  *
  * Adding a shape kind: add an entry to `REBUILD` (the factory call from the saved fields), and
  * one `registerShapeFactory(kind, factory)` line to the kind's module (registry.ts says why). A
- * kind without an entry makes `world.snapshot()` throw, naming the kind, rather than write a
+ * kind without an entry makes `snapshotWorld(world)` throw, naming the kind, rather than write a
  * shape the reader cannot rebuild.
  *
  * @module
@@ -72,7 +72,7 @@ function f64(r: SnapshotReader, f: Fields, name: string): Float64Array {
 function factory<F>(kind: string, name: string): F {
   const f = shapeFactory(kind);
   if (typeof f !== 'function') {
-    throw new Error(`World.restore: the snapshot holds a shape of kind '${kind}', and this program never loaded ${name}; reference ${name} from @physin/engine before restoring`);
+    throw new Error(`restoreWorld: the snapshot holds a shape of kind '${kind}', and this program never loaded ${name}; reference ${name} from @physin/engine before restoring`);
   }
   return f as F;
 }
@@ -231,7 +231,7 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   try {
     built = rebuild(D, fields, r);
   } catch (error) {
-    if (error instanceof Error && error.message.startsWith('World.restore')) throw error;
+    if (error instanceof Error && error.message.startsWith('restoreWorld')) throw error;
     return r.fail(`the saved ${kind} shape cannot be rebuilt (${(error as Error).message})`);
   }
   // The rebuilt shape, its data fields replaced by the saved ones.

@@ -1,5 +1,5 @@
 /**
- * `world.snapshot()`: the world's state in the order the reader rebuilds it.
+ * `snapshotWorld(world)`: the world's state in the order the reader rebuilds it.
  *
  * Payload, after the header of format.ts: n; the parameters by name; gravity; time and step
  * count; whether the broadphase boxes lag the poses; the shape table (each distinct shape object

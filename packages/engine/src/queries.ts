@@ -1,0 +1,91 @@
+/**
+ * Questions asked of a world between steps: the first body a ray hits, and the bodies in a box.
+ * Functions, not World methods, so that a scene that asks none carries no ray code in its bundle
+ * (docs/architecture.md).
+ *
+ * @module
+ */
+import { checkNumber, checkVector } from '@physin/algebra';
+import type { Body } from './body.js';
+import { createIdList, createRayCastResult, queryOverlap, rayCastClosest } from './collision/query.js';
+import type { RayCastSource } from './collision/query.js';
+import type { QueryShape } from './collision/query-shapes.js';
+import { World } from './world.js';
+
+/** The first hit of {@link castRay}. */
+export interface WorldRayHit {
+  /** The body hit. */
+  readonly body: Body;
+  /** Where the ray meets its surface (world, n numbers). */
+  readonly point: Float64Array;
+  /** The outward unit normal of the surface there (n numbers). */
+  readonly normal: Float64Array;
+  /** Distance from the origin along the normalised direction (m). */
+  readonly distance: number;
+}
+
+function checkWorld(fn: string, world: unknown): World {
+  if (!(world instanceof World)) throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
+  return world;
+}
+
+/**
+ * The first body of `world` hit by the ray origin + t·d̂, t in [0, maxDistance] (d̂ = direction
+ * normalised), or null. Every shape counts as solid: a ray that starts inside a body hits it at
+ * distance 0. Sleeping bodies are found and stay asleep. A user-level query: it allocates its
+ * result.
+ *
+ * @example
+ * ```ts
+ * const hit = castRay(world, [0, 5, 0], [0, -1, 0], 10);
+ * if (hit !== null) console.log(hit.body.label, hit.distance);
+ * ```
+ * @throws TypeError / RangeError for a world that is not a World, an origin or direction of the
+ *   wrong length or non-finite, a zero direction, or a negative or non-finite maxDistance.
+ */
+export function castRay(world: World, origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
+  const fn = 'castRay';
+  const w = checkWorld(fn, world);
+  checkVector(w.D, 'origin', origin, fn);
+  checkVector(w.D, 'direction', direction, fn);
+  let len = 0;
+  for (let i = 0; i < w.n; i += 1) len += direction[i]! * direction[i]!;
+  if (!(len > 0)) throw new RangeError(`${fn}: argument 'direction' must be a non-zero vector`);
+  checkNumber('maxDistance', maxDistance, fn);
+  if (!(maxDistance >= 0)) throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
+  const { broadphase, bodyOfProxy } = w.queryParts();
+  const source: RayCastSource = {
+    shapeOf: (id) => bodyOfProxy[id]!.shape as unknown as QueryShape,
+    positionOf: (id) => bodyOfProxy[id]!.pose!.x,
+    rotationOf: (id) => bodyOfProxy[id]!.pose!.M,
+  };
+  const out = createRayCastResult(w.n);
+  const id = rayCastClosest(broadphase, source, origin, direction, maxDistance, out);
+  if (id < 0) return null;
+  return { body: bodyOfProxy[id]!, point: out.point, normal: out.normal, distance: out.distance };
+}
+
+/**
+ * The bodies of `world` whose bounding boxes overlap the box [min, max] (closed intervals;
+ * half-spaces when the box reaches their solid side), in the order they were added. Sleeping
+ * bodies count.
+ *
+ * @throws TypeError / RangeError for a world that is not a World, bounds of the wrong length,
+ *   non-finite, or min > max.
+ */
+export function queryBox(world: World, min: ArrayLike<number>, max: ArrayLike<number>): Body[] {
+  const fn = 'queryBox';
+  const w = checkWorld(fn, world);
+  checkVector(w.D, 'min', min, fn);
+  checkVector(w.D, 'max', max, fn);
+  for (let i = 0; i < w.n; i += 1) {
+    if (min[i]! > max[i]!) throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
+  }
+  const { broadphase, bodyOfProxy } = w.queryParts();
+  const list = createIdList();
+  queryOverlap(broadphase, min, max, list);
+  const found: Body[] = [];
+  for (let i = 0; i < list.count; i += 1) found.push(bodyOfProxy[list.ids[i]!]!);
+  found.sort((a, b) => a.worldIndex - b.worldIndex);
+  return found;
+}

@@ -7,10 +7,12 @@ const src = (p: string) => fileURLToPath(new URL(p, import.meta.url));
 // tests/node-import.test.ts checks the built packages through their `exports` as a user would.
 export default defineConfig({
   resolve: {
-    alias: {
-      '@physin/algebra': src('./packages/algebra/src/index.ts'),
-      '@physin/engine': src('./packages/engine/src/index.ts'),
-    },
+    // Exact matches: '@physin/engine' must not swallow '@physin/engine/internal'.
+    alias: [
+      { find: /^@physin\/algebra$/, replacement: src('./packages/algebra/src/index.ts') },
+      { find: /^@physin\/engine$/, replacement: src('./packages/engine/src/index.ts') },
+      { find: /^@physin\/engine\/internal$/, replacement: src('./packages/engine/src/internal.ts') },
+    ],
   },
   test: {
     include: ['tests/**/*.test.ts', 'packages/*/test/**/*.test.ts'],

@@ -31,7 +31,7 @@ const SCRIPT = String.raw`
 import { PerformanceObserver, performance } from 'node:perf_hooks';
 import v8 from 'node:v8';
 const base = process.argv[process.argv.length - 1];
-const E = await import(base + '/index.js');
+const E = await import(base + '/internal.js');
 const { collideScratch, collide } = await import(base + '/collision/collide.js');
 const { NARROWPHASE_MARGIN } = await import(base + '/collision/narrowphase-scratch.js');
 const { computeBoundsUnchecked } = await import(base + '/collision/bounds.js');

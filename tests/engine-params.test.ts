@@ -3,7 +3,7 @@
  * the validator (types, ranges, unknown names; all-or-nothing in World.setParams).
  */
 import { describe, expect, it } from 'vitest';
-import { defaultParams, mergeParams, validateParams, World } from '@physin/engine';
+import { defaultParams, mergeParams, validateParams, World } from '@physin/engine/internal';
 
 // The specification's section 12 table, plus the two damping rates and the manifold reuse tolerance.
 const table: Record<string, number | boolean> = {

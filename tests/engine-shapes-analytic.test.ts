@@ -7,7 +7,7 @@ import {
   HyperBox,
   HyperSphere,
   HyperTorus,
-} from '@physin/engine';
+} from '@physin/engine/internal';
 import { seeded, uniform } from './support/random.js';
 
 /** |a − b| <= tol · max(|a|, |b|, tiny). */

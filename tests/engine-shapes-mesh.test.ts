@@ -5,8 +5,8 @@ import {
   ConvexMesh,
   HyperBox,
   simplexMassProperties,
-} from '@physin/engine';
-import type { ConvexMeshShape } from '@physin/engine';
+} from '@physin/engine/internal';
+import type { ConvexMeshShape } from '@physin/engine/internal';
 import { cubeBoundary } from './support/meshes.js';
 import type { TestMesh } from './support/meshes.js';
 import { seeded, uniform } from './support/random.js';

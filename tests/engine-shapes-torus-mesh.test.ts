@@ -1,6 +1,6 @@
 import { determinant, dims } from '@physin/algebra';
 import { describe, expect, it } from 'vitest';
-import { closedMeshMassProperties, HyperTorus } from '@physin/engine';
+import { closedMeshMassProperties, HyperTorus } from '@physin/engine/internal';
 
 /**
  * Seed plan 9 (mass part): the analytic torus against a tessellated torus integrated by

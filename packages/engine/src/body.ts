@@ -234,7 +234,7 @@ export class Body {
    * Read only: use `setMass` to change it.
    */
   readonly inertia: Float64Array;
-  /** @internal Inverse principal inertia (k numbers); zeros for static and kinematic bodies. */
+  /** Inverse principal inertia (k numbers, body frame); zeros for static and kinematic bodies. Read only. */
   readonly invInertia: Float64Array;
   /**
    * @internal The centre of mass seen from the origin of the coordinates the shape was described

@@ -1,23 +1,36 @@
 /**
- * @physin/engine — rigid body dynamics in n dimensions (n = 2..8): bodies, shapes and their mass
- * properties, collision and the contact solver, the world and its step, and every tolerance in
- * one place (`defaultParams`).
+ * @physin/engine — rigid body dynamics in n dimensions (n = 2..8): the world and its step,
+ * bodies, shapes and their mass properties, joints, queries and snapshots, and every tolerance
+ * in one place (`defaultParams`).
+ *
+ * Only what a user calls is exported here; collision kernels, the broadphase and the solver's
+ * parts live behind `@physin/engine/internal` (for tools, tests and the worker). Queries and
+ * snapshots are functions, and joints bring their solver with them, so a scene pays in its bundle
+ * only for what it uses (docs/architecture.md).
  *
  * @module
  */
 export { World } from './world.js';
-export type { WorldOptions, WorldRayHit } from './world.js';
-export { ContactEvents } from './contacts/contact-events.js';
+export type { WorldOptions } from './world.js';
+export { castRay, queryBox } from './queries.js';
+export type { WorldRayHit } from './queries.js';
+export { snapshotWorld, restoreWorld } from './snapshot/snapshot.js';
+export type { ContactEvents } from './contacts/contact-events.js';
 export type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
 export { Body } from './body.js';
 export type { BodyOptions, BodyType, Material } from './body.js';
-export { defaultParams, validateParams, mergeParams, paramNames, bodyDefaults, ROTOR_INPUT_TOLERANCE, MAX_PARAM_COUNT } from './params.js';
+export { defaultParams, validateParams } from './params.js';
 export type { Params } from './params.js';
 export { NonFiniteStateError } from './errors.js';
 export type { StateField } from './errors.js';
 export { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';
-export * from './shapes/index.js';
+export { HyperBox } from './shapes/box.js';
+export { HyperSphere } from './shapes/sphere.js';
+export { HalfSpace } from './shapes/half-space.js';
+export { HyperTorus } from './shapes/torus.js';
+export { ConvexMesh } from './shapes/convex-mesh.js';
+export type { AnyShape, BoxShape, SphereShape, HalfSpaceShape, TorusShape, ConvexMeshShape, ConvexMeshOptions, ConvexMeshTriangleOptions, TriangleMergeOptions, MassProperties, Shape, ShapeKind } from './shapes/index.js';
 export { dims } from '@physin/algebra';
 export type { Dims } from '@physin/algebra';
-export * from './collision/index.js';
-export * from './joints/index.js';
+export { Joint, PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint } from './joints/index.js';
+export type { JointOptions, JointBrokenEvent, JointBrokenListener, DistanceJointOptions, DistanceMode, HingeJointOptions, SubspaceJointOptions } from './joints/index.js';

@@ -1,0 +1,122 @@
+/**
+ * What a user ships: each scene of tests/bundles/ built with Vite's production build (as an app
+ * would build it: minified, tree-shaken, @physin/* through their package exports to dist/), then
+ * gzipped. The table is printed and kept in docs/architecture.md.
+ *
+ * Checked:
+ * - the box world carries none of what it does not use: no joint, snapshot, ray-cast or query
+ *   code, no torus or convex-mesh code, one broadphase (the module lists of the bundle);
+ * - a hinge, a ray cast or tori each add their own code only (the box world's modules plus theirs);
+ * - budgets (gzip bytes) that fail on growth. The goal of issue 16 is a box world smaller than
+ *   cannon-es's, printed beside it; the budget is today's size until the goal is reached.
+ */
+import { gzipSync } from 'node:zlib';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { mkdtempSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, relative } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const scenes = join(root, 'tests/bundles');
+const out = mkdtempSync(join(tmpdir(), 'physin-bundles-'));
+
+interface Built {
+  /** Minified bytes. */
+  min: number;
+  /** Gzipped bytes (zlib level 9). */
+  gzip: number;
+  /** The source modules in the bundle, as paths relative to the repository (packages/…). */
+  modules: string[];
+}
+
+/**
+ * Budgets in gzip bytes: today's sizes plus about 2 %. Lower them when the code shrinks; a rise
+ * must be paid for by a feature and argued in the commit.
+ */
+const BUDGET: Record<string, number> = {
+  boxes: 40_300,
+  'boxes-hinge': 50_800,
+  'boxes-ray': 42_200,
+  'boxes-tori': 41_500,
+  rotor3: 5_500,
+};
+
+const built = new Map<string, Built>();
+
+async function buildScene(name: string): Promise<Built> {
+  const vite = (await import(pathToFileURL(join(root, 'examples/node_modules/vite/dist/node/index.js')).href)) as typeof import('vite');
+  const require = createRequire(join(root, 'bench/package.json'));
+  const modules: string[] = [];
+  await vite.build({
+    configFile: false,
+    logLevel: 'silent',
+    root: scenes,
+    resolve: { alias: { 'cannon-es': require.resolve('cannon-es') } },
+    plugins: [
+      {
+        name: 'physin-bundle-modules',
+        generateBundle(_options, bundle) {
+          for (const chunk of Object.values(bundle)) {
+            if (chunk.type !== 'chunk') continue;
+            for (const [id, info] of Object.entries(chunk.modules)) if (info.renderedLength > 0) modules.push(relative(root, id));
+          }
+        },
+      },
+    ],
+    build: {
+      outDir: join(out, name),
+      emptyOutDir: true,
+      target: 'es2022',
+      rolldownOptions: { input: join(scenes, `${name}.js`), output: { entryFileNames: 'main.js' } },
+    },
+  });
+  const code = readFileSync(join(out, name, 'main.js'));
+  return { min: code.length, gzip: gzipSync(code, { level: 9 }).length, modules: modules.sort() };
+}
+
+const NAMES = ['boxes', 'boxes-hinge', 'boxes-ray', 'boxes-tori', 'rotor3', 'cannon-boxes'];
+
+beforeAll(async () => {
+  for (const name of NAMES) built.set(name, await buildScene(name));
+  const kb = (bytes: number): string => (bytes / 1024).toFixed(1);
+  const lines = ['| scene | min kB | gzip kB |', '|---|---:|---:|'];
+  for (const name of NAMES) lines.push(`| ${name} | ${kb(built.get(name)!.min)} | ${kb(built.get(name)!.gzip)} |`);
+  console.log(`\nBundle sizes (Vite production build, gzip -9):\n${lines.join('\n')}\n`);
+}, 180_000);
+
+afterAll(() => rmSync(out, { recursive: true, force: true }));
+
+const has = (name: string, pattern: RegExp): string[] => built.get(name)!.modules.filter((m) => pattern.test(m));
+
+describe('bundle size: a scene pays for what it uses', () => {
+  it('the box world carries no joints, snapshots, queries, tori, meshes, nor a second broadphase', () => {
+    expect(has('boxes', /engine\/dist\/joints\//)).toEqual([]);
+    expect(has('boxes', /engine\/dist\/snapshot\/(?!registry)/)).toEqual([]);
+    expect(has('boxes', /raycast|\/query\.js|queries\.js/)).toEqual([]);
+    expect(has('boxes', /torus|convex-mesh|mesh-/)).toEqual([]);
+    expect(has('boxes', /broadphase-sap/)).toEqual([]);
+  });
+
+  it('a hinge, a ray cast and tori each add their own modules only', () => {
+    const base = new Set(built.get('boxes')!.modules);
+    const added = (name: string): string[] => built.get(name)!.modules.filter((m) => !base.has(m) && !m.startsWith('tests/'));
+    // The hinge's rows use the algebra's bivector helpers; the ray cast brings the ray code of
+    // every shape kind (the torus trace among it: about 1 kB); tori bring their pair colliders.
+    expect(added('boxes-hinge')).toContain('packages/engine/dist/joints/joint-solver.js');
+    expect(added('boxes-hinge').filter((m) => !/engine\/dist\/joints\/|algebra\/dist\//.test(m))).toEqual([]);
+    expect(added('boxes-ray')).toContain('packages/engine/dist/queries.js');
+    expect(added('boxes-ray').filter((m) => !/raycast|\/query\.js|queries\.js/.test(m))).toEqual([]);
+    expect(added('boxes-tori')).toContain('packages/engine/dist/shapes/torus.js');
+    expect(added('boxes-tori').filter((m) => !/torus|ball-volume/.test(m))).toEqual([]);
+    expect(has('boxes-tori', /joints\/|snapshot\/(?!registry)|raycast/)).toEqual([]);
+  });
+
+  it('each scene stays within its gzip budget (cannon-es printed beside the box world)', () => {
+    for (const [name, budget] of Object.entries(BUDGET)) {
+      expect(built.get(name)!.gzip, `${name}: ${built.get(name)!.gzip} B gzip`).toBeLessThanOrEqual(budget);
+    }
+  });
+});

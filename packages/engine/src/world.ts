@@ -140,7 +140,7 @@ export class World {
   private readonly scratch: WorldScratch;
   /** The scalars of the current sub-step, see `step-constants.ts`. */
   private readonly constants: Float64Array;
-  /** [simulated time (s), completed steps]: kept in typed storage so step() boxes no double. */
+  /** Simulated time (s) and completed steps, in typed storage so step() boxes no double. */
   private readonly clock = new Float64Array(2);
 
   // ---- collision and contacts (see docs/solver.md) ----

@@ -62,6 +62,7 @@ export class ContactEvents {
   private readonly laterB: Body[] = [];
   private laterCount = 0;
 
+  /** @internal */
   constructor(n: number) {
     this.n = n;
     this.beginPoint = new Float64Array(8 * n);
@@ -70,6 +71,7 @@ export class ContactEvents {
   }
 
   /**
+   * @internal
    * Forgets the events of the last step; the end events recorded since by
    * {@link ContactEvents.pushEndLater} become the first of the new step's list.
    */
@@ -84,6 +86,7 @@ export class ContactEvents {
   }
 
   /**
+   * @internal
    * Records that A and B stopped touching between steps (one of them left the world). Reported
    * with the events of the next step, as Box2D does, so that a reader of the last step's list is
    * not surprised by an event appended after the step, and no end goes unreported.
@@ -103,6 +106,7 @@ export class ContactEvents {
   }
 
   /**
+   * @internal
    * Records that the bodies of contact `slot` began touching, with the deepest point of their
    * manifold and its total normal impulse.
    */
@@ -131,7 +135,7 @@ export class ContactEvents {
     this.beginImpulse[i] = impulse;
   }
 
-  /** Records that A and B stopped touching. */
+  /** @internal Records that A and B stopped touching. */
   pushEnd(A: Body, B: Body): void {
     const i = this.endCount++;
     this.endA[i] = A;

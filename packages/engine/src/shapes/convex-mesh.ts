@@ -25,7 +25,7 @@ export interface ConvexMeshOptions {
   /**
    * Relative tolerance (fraction of the mesh size, > 0): a vertex may lie this far outside a facet
    * plane, and a facet whose (n−1)-volume is below tolerance × size^(n−1) is degenerate.
-   * Default {@link DEFAULT_CONVEX_MESH_TOLERANCE}.
+   * Default 1e-7.
    */
   readonly tolerance?: number;
 }
@@ -163,6 +163,10 @@ function fromTriangles(
   }
 }
 
+/**
+ * Builds a 3D convex mesh from a triangle soup (as in a three.js `BufferGeometry`): coplanar
+ * triangles merge into facets, duplicated positions into vertices. See {@link ConvexMeshTriangleOptions}.
+ */
 ConvexMesh.fromTriangles = fromTriangles;
 
 // World snapshots rebuild saved meshes with this factory (snapshot/registry.ts).

@@ -45,7 +45,7 @@ export interface Shape {
   /** Mass properties of this shape in `D`'s dimension for a total mass `mass` (kg, > 0). */
   massProperties(D: Dims, mass: number): MassProperties;
   /**
-   * The narrowphase pair colliders this shape's kind owns, keyed by the other shape's kind (see
+   * @internal The narrowphase pair colliders this shape's kind owns, keyed by the other shape's kind (see
    * collision/manifold.ts, ColliderTable). Absent: the kind owns no pair (a half-space: its pairs
    * live in the other shapes' tables).
    */

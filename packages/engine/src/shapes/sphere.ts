@@ -18,7 +18,7 @@ export interface SphereShape extends Shape {
  * Builds a solid ball (hypersphere) of the given radius in the dimensions of `D`. Every shape
  * factory takes the dimensions first, so a call reads the same for every shape.
  *
- * Mass properties in n dimensions: volume V_n(ρ) = π^(n/2) ρⁿ / Γ(n/2 + 1) (see {@link ballVolume});
+ * Mass properties in n dimensions: volume V_n(ρ) = π^(n/2) ρⁿ / Γ(n/2 + 1) (the engine's `ballVolume`);
  * covariance C_ii = m ρ² / (n + 2) on every axis.
  *
  * @param D - the dimensions (from `dims(n)`).

@@ -12,6 +12,7 @@ export default defineConfig({
       { find: /^@physin\/algebra$/, replacement: src('./packages/algebra/src/index.ts') },
       { find: /^@physin\/engine$/, replacement: src('./packages/engine/src/index.ts') },
       { find: /^@physin\/engine\/internal$/, replacement: src('./packages/engine/src/internal.ts') },
+      { find: /^@physin\/engine\/3d$/, replacement: src('./packages/engine/src/3d.ts') },
     ],
   },
   test: {

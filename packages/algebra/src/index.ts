@@ -3,7 +3,8 @@
  * dimension, bivectors, rotors, inertia from covariance, small dense linear algebra, and the
  * argument checks shared by the PhysiN packages. See docs/nd-physics.md for the conventions.
  */
-export { dims, planeIndex, bladeProductSign, popcount, MIN_DIMENSION, MAX_DIMENSION } from './dims.js';
+export { dims, planeIndex, bladeProductSign, popcount, isDims, MIN_DIMENSION, MAX_DIMENSION } from './dims.js';
+export { dims3, dims4 } from './dims-fixed.js';
 export type { Dims } from './dims.js';
 export type { RotorKernels } from './kernels/types.js';
 export { createGenericKernels } from './kernels/generic.js';

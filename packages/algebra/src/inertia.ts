@@ -6,7 +6,7 @@
  * principal frame of C (C diagonal) the operator is diagonal with I_(ij) = C_ii + C_jj, which is
  * how bodies store it.
  */
-import type { Dims } from './dims.js';
+import type { Dims } from './tables.js';
 import {
   checkArray,
   checkBivector,

@@ -8,7 +8,7 @@
  * and antisymmetric, which a first-order rotor absorbs. No step divides by (1 + cos θ), so half
  * turns are ordinary inputs. See docs/nd-physics.md ("Matrix to rotor") for the half-turn rules.
  */
-import type { Dims } from './dims.js';
+import type { Dims } from './tables.js';
 import { determinantUnchecked } from './linalg.js';
 import { checkDims, checkMatrix, checkOutRotor } from './validate.js';
 

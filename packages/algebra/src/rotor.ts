@@ -11,7 +11,7 @@
  * written on failure) and then calls the unchecked kernel of its dimension, `D.kernels`.
  * Inputs may be any array-like of numbers; outputs are Float64Array.
  */
-import type { Dims } from './dims.js';
+import type { Dims } from './tables.js';
 import { matrixToRotor as matrixToRotorImpl } from './matrix-to-rotor.js';
 import {
   checkBivector,

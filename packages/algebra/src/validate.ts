@@ -9,7 +9,7 @@
  *
  * The engine package imports these too, so its messages read the same way.
  */
-import type { Dims } from './dims.js';
+import type { Dims } from './tables.js';
 
 function prefix(fn: string | undefined): string {
   return fn ? `${fn}: ` : '';

@@ -10,7 +10,8 @@
  *
  * @module
  */
-export { World } from './world.js';
+export { World } from './world-nd.js';
+export { WorldBase } from './world.js';
 export type { WorldOptions } from './world.js';
 export { castRay, queryBox } from './queries.js';
 export type { WorldRayHit } from './queries.js';

@@ -10,7 +10,7 @@ import type { Body } from './body.js';
 import { createIdList, createRayCastResult, queryOverlap, rayCastClosest } from './collision/query.js';
 import type { RayCastSource } from './collision/query.js';
 import type { QueryShape } from './collision/query-shapes.js';
-import { World } from './world.js';
+import { WorldBase } from './world.js';
 
 /** The first hit of {@link castRay}. */
 export interface WorldRayHit {
@@ -24,8 +24,8 @@ export interface WorldRayHit {
   readonly distance: number;
 }
 
-function checkWorld(fn: string, world: unknown): World {
-  if (!(world instanceof World)) throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
+function checkWorld(fn: string, world: unknown): WorldBase {
+  if (!(world instanceof WorldBase)) throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
   return world;
 }
 
@@ -43,7 +43,7 @@ function checkWorld(fn: string, world: unknown): World {
  * @throws TypeError / RangeError for a world that is not a World, an origin or direction of the
  *   wrong length or non-finite, a zero direction, or a negative or non-finite maxDistance.
  */
-export function castRay(world: World, origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
+export function castRay(world: WorldBase, origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
   const fn = 'castRay';
   const w = checkWorld(fn, world);
   checkVector(w.D, 'origin', origin, fn);
@@ -73,7 +73,7 @@ export function castRay(world: World, origin: ArrayLike<number>, direction: Arra
  * @throws TypeError / RangeError for a world that is not a World, bounds of the wrong length,
  *   non-finite, or min > max.
  */
-export function queryBox(world: World, min: ArrayLike<number>, max: ArrayLike<number>): Body[] {
+export function queryBox(world: WorldBase, min: ArrayLike<number>, max: ArrayLike<number>): Body[] {
   const fn = 'queryBox';
   const w = checkWorld(fn, world);
   checkVector(w.D, 'min', min, fn);

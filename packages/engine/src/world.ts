@@ -3,7 +3,7 @@
  *
  * @module
  */
-import { checkInteger, checkNumber, checkVector, dims, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
+import { checkInteger, checkNumber, checkVector, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import { Body, MOTION_STATIC } from './body.js';
 import type { BodyOwner } from './body.js';
@@ -120,13 +120,15 @@ function throwBadTimeStep(dt: unknown): never {
 }
 
 /**
- * A world of rigid bodies in n dimensions.
+ * A world of rigid bodies in n dimensions, whichever tables of dimensions it was built with: the
+ * base of {@link World} (every n) and of the World of `@physin/engine/3d` (3D alone, a smaller
+ * bundle). Use one of those to build a world; functions that take any world take a WorldBase.
  *
  * `step(dt)` advances it by dt seconds in `params.subSteps` equal sub-steps. Each sub-step reads
- * as the pipeline it is (see {@link World.step}). Bodies live in `bodies` in the order they were
- * added. Every public method validates its arguments and throws before changing anything.
+ * as the pipeline it is (see {@link WorldBase.step}). Bodies live in `bodies` in the order they
+ * were added. Every public method validates its arguments and throws before changing anything.
  */
-export class World {
+export class WorldBase {
   /** The tables of the world's dimension. */
   readonly D: Dims;
   /** Number of dimensions. */
@@ -192,10 +194,12 @@ export class World {
   };
 
   /**
-   * @throws TypeError / RangeError for a bad `dimensions` (not an integer in 2..8), `gravity`
-   *   (wrong length, non-finite) or `params` (unknown name, wrong type or range).
+   * @param tables - the tables of dimension n (the entry's `dims`), called once n is checked.
+   * @throws TypeError / RangeError for a bad `dimensions` (not an integer in 2..8, or one the
+   *   entry does not build), `gravity` (wrong length, non-finite) or `params` (unknown name,
+   *   wrong type or range).
    */
-  constructor(options: WorldOptions) {
+  protected constructor(options: WorldOptions, tables: (n: number) => Dims) {
     const fn = 'new World';
     if (options === null || typeof options !== 'object') {
       throw new TypeError(`${fn}: argument 'options' must be an object { dimensions, gravity?, params? }`);
@@ -206,7 +210,7 @@ export class World {
       }
     }
     checkInteger('dimensions', options.dimensions, MIN_DIMENSION, MAX_DIMENSION, fn);
-    const D = dims(options.dimensions);
+    const D = tables(options.dimensions);
     if (options.gravity !== undefined) checkVector(D, 'gravity', options.gravity, fn);
     const params = mergeParams(defaultParams, options.params, fn);
     this.D = D;
@@ -262,7 +266,7 @@ export class World {
     return c;
   }
 
-  /** The current parameters (a frozen object; change them with {@link World.setParams}). */
+  /** The current parameters (a frozen object; change them with {@link WorldBase.setParams}). */
   get params(): Readonly<Params> {
     return this.currentParams;
   }

@@ -13,7 +13,7 @@
  * helper) so that V8 compiles it in place. Kernels read all inputs into locals before writing,
  * so `out` may alias any input, and they allocate nothing. They do not validate (hot path).
  */
-import type { Dims } from '../dims.js';
+import type { Dims } from '../tables.js';
 import type { RotorKernels } from './types.js';
 
 /**

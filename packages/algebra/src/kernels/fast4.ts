@@ -25,7 +25,7 @@
  * Every kernel reads its inputs into locals before writing, so `out` may alias an input; none
  * allocates; none validates (hot path: the public functions of rotor.ts check first).
  */
-import type { Dims } from '../dims.js';
+import type { Dims } from '../tables.js';
 import type { RotorKernels } from './types.js';
 
 /**

@@ -16,8 +16,8 @@
  * - correct: n <= 3 normalises (every unit even element is a rotor there); otherwise matrix →
  *   nearest rotation (polar factor) → rotor by reflections, with the sign of the input.
  */
-import type { Dims } from '../dims.js';
-import { bladeProductSign, popcount } from '../dims.js';
+import type { Dims } from '../tables.js';
+import { bladeProductSign, popcount } from '../tables.js';
 import { orthonormalizeUnchecked } from '../linalg.js';
 import { createMatrixToRotorScratch, matrixToRotorUnchecked } from '../matrix-to-rotor.js';
 import type { RotorKernels } from './types.js';

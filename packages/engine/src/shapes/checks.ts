@@ -1,4 +1,4 @@
-import { dims } from '@physin/algebra';
+import { isDims } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 
 /**
@@ -28,7 +28,7 @@ export function checkDims(where: string, D: unknown, name = 'D'): Dims {
     throw new TypeError(`${where}: argument '${name}' must be the tables returned by dims(n), got ${describe(D)}`);
   }
   const n = (D as { n: number }).n;
-  if (!Number.isInteger(n) || n < 2 || n > 8 || dims(n) !== D) {
+  if (!Number.isInteger(n) || n < 2 || n > 8 || !isDims(D)) {
     throw new TypeError(`${where}: argument '${name}' must be the tables returned by dims(n) (2 <= n <= 8)`);
   }
   return D as Dims;

@@ -13,7 +13,7 @@
 import type { Body } from '../body.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
-import type { World, WorldOptions } from '../world.js';
+import type { WorldBase as World, WorldOptions } from '../world.js';
 import { applyBodyFlags, readBody } from './bodies.js';
 import type { BodyFlags } from './bodies.js';
 import { readBroadphase } from './broadphase.js';

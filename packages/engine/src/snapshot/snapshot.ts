@@ -4,7 +4,8 @@
  *
  * @module
  */
-import { World } from '../world.js';
+import { WorldBase } from '../world.js';
+import { World } from '../world-nd.js';
 import { readWorldSnapshot } from './read-world.js';
 import { writeWorldSnapshot } from './write-world.js';
 
@@ -29,8 +30,8 @@ import { writeWorldSnapshot } from './write-world.js';
  * @throws TypeError if `world` is not a World; Error if a body has a shape kind the snapshot code
  *   does not know (it names the kind).
  */
-export function snapshotWorld(world: World): Uint8Array {
-  if (!(world instanceof World)) throw new TypeError(`snapshotWorld: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
+export function snapshotWorld(world: WorldBase): Uint8Array {
+  if (!(world instanceof WorldBase)) throw new TypeError(`snapshotWorld: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
   return writeWorldSnapshot(world, world.snapshotParts());
 }
 

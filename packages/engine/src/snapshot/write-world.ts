@@ -13,7 +13,7 @@
  */
 import type { Body } from '../body.js';
 import type { Shape } from '../shapes/shape.js';
-import type { World } from '../world.js';
+import type { WorldBase as World } from '../world.js';
 import { writeBody } from './bodies.js';
 import { writeBroadphase } from './broadphase.js';
 import { writeContacts, writePendingEnds } from './contacts.js';

@@ -68,6 +68,32 @@ console.log(JSON.stringify([...box.x]));
     expect(x[1]).toBeCloseTo(0.5, 3);
   }, 120_000);
 
+  it('CommonJS require() of every engine entry works (Node 20.19+ loads ES modules through require)', () => {
+    const dir = folder();
+    npmInstall(dir, ['physin-algebra-0.1.0.tgz', 'physin-engine-0.1.0.tgz']);
+    writeFileSync(
+      join(dir, 'server.cjs'),
+      `const { World, Body, HyperBox, HalfSpace, dims, castRay } = require('@physin/engine');
+const three = require('@physin/engine/3d');
+const internal = require('@physin/engine/internal');
+const algebra = require('@physin/algebra');
+const D = dims(3);
+const world = new three.World({ dimensions: 3, gravity: [0, -9.81, 0] });
+world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
+world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.5, 0.5]), mass: 1, position: [0, 2, 0] }));
+for (let i = 0; i < 60; i += 1) world.step(1 / 60);
+console.log(JSON.stringify({
+  hit: castRay(world, [0, 5, 0], [0, -1, 0], 10) !== null,
+  sameTables: three.dims(3) === algebra.dims(3),
+  world: world instanceof World === false && typeof internal.collide === 'function',
+  rootHasInternals: 'collide' in require('@physin/engine'),
+}));
+`,
+    );
+    const out = JSON.parse(execFileSync(process.execPath, ['server.cjs'], { cwd: dir, encoding: 'utf8' })) as Record<string, boolean>;
+    expect(out).toEqual({ hit: true, sameTables: true, world: true, rootHasInternals: false });
+  }, 120_000);
+
   for (const resolution of ['bundler', 'node16'] as const) {
     it(`TypeScript strict, moduleResolution ${resolution}: the types resolve and wrong calls stay errors`, () => {
       const dir = folder();
@@ -90,8 +116,11 @@ console.log(JSON.stringify([...box.x]));
       );
       writeFileSync(
         join(dir, 'main.ts'),
-        `import { World, Body, HyperBox, dims } from '@physin/engine';
-import type { Params } from '@physin/engine';
+        `import { World, Body, HyperBox, HyperSphere, dims, castRay, snapshotWorld } from '@physin/engine';
+import type { Params, WorldRayHit } from '@physin/engine';
+import { World as World3 } from '@physin/engine/3d';
+import { collide } from '@physin/engine/internal';
+import { dims3 } from '@physin/algebra';
 import { openWorld } from '@physin/worker';
 import type { WorldHost, StepReport } from '@physin/worker';
 import { rotorFromPlane } from '@physin/algebra';
@@ -112,6 +141,14 @@ async function run(): Promise<number> {
 void run;
 void speed;
 void R;
+const world3 = new World3({ dimensions: 3 });
+const hit: WorldRayHit | null = castRay(world3, [0, 1, 0], [0, -1, 0], 2);
+const bytes: Uint8Array = snapshotWorld(world);
+void hit;
+void bytes;
+void collide;
+void dims3;
+void HyperSphere(D, 0.5);
 
 // @ts-expect-error: a world needs its dimensions
 new World({ gravity: [0, -9.81, 0] });
@@ -120,6 +157,16 @@ world.step('fast');
 // @ts-expect-error: unknown parameter
 const wrong: Partial<Params> = { fixedTimestep: 1 / 60 };
 void wrong;
+// @ts-expect-error: a body's sleep state belongs to its world (read body.isSleeping)
+body.sleeping = true;
+// @ts-expect-error: a body's position is read-only; move it with setPositionN
+body.x = new Float64Array(3);
+// @ts-expect-error: the tables of a world do not change
+world.D = D;
+// @ts-expect-error: the world keeps its broadphase to itself
+void world.broadphase;
+// @ts-expect-error: every shape factory takes the dimensions first
+HyperSphere(0.5);
 // @ts-expect-error: an unknown shape kind
 openWorld({ dimensions: 3 }).then((h) => h.addBody({ shape: { kind: 'cone', radius: 1 } }));
 // @ts-expect-error: an unknown command

@@ -7,7 +7,8 @@
  */
 import type { Body } from '../body.js';
 import { currentAnchors, distance } from './frames.js';
-import { Joint, JS_COMMON_COUNT } from './joint.js';
+import { Joint } from './joint.js';
+import { JS_COMMON_COUNT } from './joint-slots.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
 import { KIND_LINEAR, ROW_EQUAL, ROW_INEQUAL, SC_C, SC_TOL } from './joint-solver.js';

@@ -8,7 +8,8 @@
 import { isSimple } from '@physin/algebra';
 import type { Body } from '../body.js';
 import { currentAnchors, currentRelative, distance, planeFrameRotor, referenceFrame } from './frames.js';
-import { Joint, JS_COMMON_COUNT, JS_H } from './joint.js';
+import { Joint } from './joint.js';
+import { JS_COMMON_COUNT, JS_H } from './joint-slots.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
 import { KIND_ANGULAR, KIND_MOTOR, ROW_EQUAL, ROW_INEQUAL, ROW_MOTOR, SC_C, SC_H, SC_HI, SC_LO, SC_TARGET } from './joint-solver.js';

@@ -52,7 +52,6 @@ export interface JointOwner {
   onJointChanged(joint: Joint): void;
 }
 
-export { JS_HERTZ, JS_DAMPING, JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_FORCE, JS_TORQUE, JS_H, JS_COMMON_COUNT } from './joint-slots.js';
 import { JS_HERTZ, JS_DAMPING, JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_FORCE, JS_TORQUE, JS_COMMON_COUNT } from './joint-slots.js';
 
 let nextJointId = 1;

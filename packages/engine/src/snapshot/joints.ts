@@ -16,7 +16,7 @@ import type { Body } from '../body.js';
 import type { DistanceJoint, DistanceMode } from '../joints/distance.js';
 import type { FixedJoint } from '../joints/fixed.js';
 import type { HingeJoint } from '../joints/hinge.js';
-import { JS_COMMON_COUNT } from '../joints/joint.js';
+import { JS_COMMON_COUNT } from '../joints/joint-slots.js';
 import type { Joint } from '../joints/joint.js';
 import type { PointJoint } from '../joints/point.js';
 import type { SubspaceJoint } from '../joints/subspace.js';

@@ -60,7 +60,7 @@ interface Measure {
   windows: Window[];
 }
 
-let results: Record<string, Measure> = {};
+const results: Record<string, Measure> = {};
 
 /**
  * The step's own allocation would repeat in every window; a late compile on a loaded machine (CI

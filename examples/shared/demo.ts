@@ -22,7 +22,6 @@ export interface DemoHook {
 }
 
 declare global {
-  // eslint-disable-next-line no-var
   var physinDemo: DemoHook | undefined;
 }
 

@@ -635,6 +635,8 @@ export class WorldBase {
     const reach = this.reach;
     const h = this.constants[STEP_H]!;
     const speeds = this.scratch.speeds;
+    // The solver's speculative rows and restitution read the gravity of this sub-step.
+    this.solver.gravity.set(this.gravityValue);
     for (let b = 0; b < bodies.length; b += 1) {
       const body = bodies[b]!;
       if (body.poseDirty) {

@@ -16,7 +16,8 @@ import type { Body } from '../body.js';
 import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import { collideScratch } from '../collision/collide.js';
 import type { Manifold } from '../collision/manifold.js';
-import { createManifold, maxManifoldPoints } from '../collision/manifold.js';
+import type { Pose } from '../collision/manifold.js';
+import { createManifold, createPose, maxManifoldPoints } from '../collision/manifold.js';
 import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
@@ -50,6 +51,26 @@ export function isMoving(body: Body): boolean {
   for (let i = 0; i < w.length; i += 1) if (w[i] !== 0) return true;
   return false;
 }
+
+/**
+ * Scratch of the sweep that tells a real speculative contact from a ghost (`meetsInSubStep`), one
+ * per count of dimensions, shared by the worlds of that n (the sweep runs within one call and
+ * keeps nothing). Made by the ContactSet constructor, so a step allocates nothing.
+ */
+interface SweepScratch {
+  /** The manifold of the pair at a time in the sub-step. */
+  readonly manifold: Manifold;
+  /** B's pose moved along the relative velocity (its M a copy of B's). */
+  readonly pose: Pose;
+  /** [sub-step h, tolerance, …] (an array: no boxed doubles). */
+  readonly numbers: Float64Array;
+}
+const sweepScratch: (SweepScratch | undefined)[] = [];
+
+/** Newton steps of the sweep (at most; it converges from below in a few). */
+const SWEEP_STEPS = 24;
+/** A gap the sweep closes to within this (m), plus the bodies' rotational reach, meets. */
+const SWEEP_TOLERANCE = 1e-4;
 
 /**
  * The contact slots of one world (n dimensions). All arrays are indexed by slot; `order` lists
@@ -131,6 +152,9 @@ export class ContactSet {
     this.oldTaken = new Uint8Array(this.pointCapacity);
     this.newMatched = new Uint8Array(this.pointCapacity);
     this.cache = new ManifoldCache(n, this.pointCapacity);
+    if (sweepScratch[n] === undefined) {
+      sweepScratch[n] = { manifold: createManifold(n, this.pointCapacity), pose: createPose(n), numbers: new Float64Array(4) };
+    }
     this.ensureSlots(16);
   }
 
@@ -297,6 +321,81 @@ export class ContactSet {
     this.count = count;
   }
 
+  /**
+   * Whether the speculative manifold `m` of A and B (every point apart) can close in this
+   * sub-step. A manifold with a point that touches, or whose gap the relative velocity along its
+   * normal does not close within the sub-step, is left as it is (true): its rows push only if the
+   * solve makes the bodies approach. Otherwise B is swept along the relative velocity v_B − v_A
+   * (A held still) by Newton steps on the gap d(t), which for convex shapes under a translation is
+   * convex in t, so the steps t += d / (−d′) approach the first contact from below: the pair meets
+   * when the gap falls below SWEEP_TOLERANCE plus the distance the rotations can move the surfaces
+   * in a sub-step, and does not when the gap stops closing or the time passes the sub-step. Only
+   * spheres and boxes are swept (a torus is not convex); other pairs, and a sweep that has not
+   * settled, keep the manifold. The sub-step h is read from the reaches, h·(|v| + |ω|·ρ).
+   */
+  private meetsInSubStep(m: Manifold, A: Body, B: Body, reach: Float64Array, scratch: NarrowphaseScratch): boolean {
+    const kA = A.shape.kind;
+    const kB = B.shape.kind;
+    if ((kA !== 'sphere' && kA !== 'box') || (kB !== 'sphere' && kB !== 'box')) return true;
+    const n = this.n;
+    let gap = Infinity;
+    for (let p = 0; p < m.count; p += 1) if (m.separations[p] < gap) gap = m.separations[p];
+    if (!(gap > 0)) return true;
+    // h from the reach of the faster body: reach = h·(|v| + |ω|·ρ).
+    const sw = sweepScratch[n]!;
+    const num = sw.numbers;
+    num[0] = 0; // speed + spin·ρ of A, then of B
+    num[1] = 0;
+    let rot = 0;
+    for (let side = 0; side < 2; side += 1) {
+      const body = side === 0 ? A : B;
+      if (body.motion === MOTION_STATIC) continue;
+      let v2 = 0;
+      for (let c = 0; c < n; c += 1) v2 += body.v[c] * body.v[c];
+      let w2 = 0;
+      const w = body.w;
+      for (let c = 0; c < w.length; c += 1) w2 += w[c] * w[c];
+      const spin = Math.sqrt(w2) * body.boundingRadius;
+      num[side] = Math.sqrt(v2) + spin;
+      rot += spin;
+    }
+    const useB = num[1] * reach[A.worldIndex] >= num[0] * reach[B.worldIndex] ? 1 : 0;
+    const rate = num[useB];
+    const r = reach[useB === 1 ? B.worldIndex : A.worldIndex];
+    if (!(rate > 0) || !(r > 0)) return true;
+    const h = r / rate;
+    const tolerance = SWEEP_TOLERANCE + h * rot;
+    if (gap <= tolerance) return true;
+    // The relative velocity, and whether the linear view closes the gap in the sub-step at all.
+    const vA = A.v;
+    const vB = B.v;
+    let closing = 0;
+    for (let c = 0; c < n; c += 1) closing -= m.normal[c] * (vB[c] - vA[c]);
+    if (gap - h * closing > tolerance) return true;
+    const pose = sw.pose;
+    const poseB = B.pose!;
+    pose.M.set(poseB.M);
+    const out = sw.manifold;
+    let t = 0;
+    let d = gap;
+    let rateNow = closing;
+    for (let it = 0; it < SWEEP_STEPS; it += 1) {
+      if (d <= tolerance) return true;
+      if (!(rateNow > 0)) return false;
+      t += d / rateNow;
+      if (t > h) return false;
+      for (let c = 0; c < n; c += 1) pose.x[c] = poseB.x[c] + t * (vB[c] - vA[c]);
+      // (The narrowphase margin is still the pair's, set for the manifold being checked.)
+      collideScratch(out, n, A.shape as never, A.pose!, B.shape as never, pose, scratch);
+      if (out.count === 0) return false; // farther apart than the margin: moving away
+      d = Infinity;
+      for (let p = 0; p < out.count; p += 1) if (out.separations[p] < d) d = out.separations[p];
+      rateNow = 0;
+      for (let c = 0; c < n; c += 1) rateNow -= out.normal[c] * (vB[c] - vA[c]);
+    }
+    return true;
+  }
+
   /** Forgets the friction patch of `slot` (a new contact, or one whose points all changed). */
   private clearPatch(slot: number): void {
     this.patchTangent.fill(0, slot * this.n, (slot + 1) * this.n);
@@ -413,6 +512,13 @@ export class ContactSet {
       // never pairs this manifold's ids with points cached before it.)
       if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
       else this.cache.forget(slot);
+      // A speculative manifold whose gap the velocities would close only along its normal (the
+      // row's linear view) but that the bodies never reach in this sub-step is a ghost: it would
+      // push a body flying past an edge. Swept, it is dropped (docs/solver.md, Speculative contacts).
+      if (m.count > 0 && A.shape.kind !== 'halfspace' && B.shape.kind !== 'halfspace' && !this.meetsInSubStep(m, A, B, reach, scratch)) {
+        m.count = 0;
+        if (reusable) this.cache.forget(slot);
+      }
       let touching = false;
       oldTaken.fill(0, 0, oldCount);
       const newMatched = this.newMatched;

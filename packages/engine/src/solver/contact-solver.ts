@@ -30,6 +30,7 @@
 import type { Dims } from '@physin/algebra';
 import type { Body } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
+import { MOTION_DYNAMIC } from '../body.js';
 import { CONTACT_ACTIVE, growFloat64, growInt32 } from '../contacts/contact-set.js';
 import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
@@ -48,6 +49,8 @@ const SOLVE_TOLERANCE = 5;
 const SOLVE_CHANGE = 6;
 /** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
 const SHOCK_INNER_SWEEPS = 3;
+/** Sweeps over the bouncing points of one manifold in the restitution pass (at most). */
+const RESTITUTION_SWEEPS = 32;
 
 /** Sequential-impulse solver of the contacts of one world. */
 export class ContactSolver {
@@ -100,7 +103,18 @@ export class ContactSolver {
   private rows: Float64Array;
   private target = new Float64Array(16);
   private vn0 = new Float64Array(16);
+  /**
+   * Per point: the approach a speculative stop records for the next sub-step's bounce (see
+   * `restitution`), in the units of vn0 (the bounce sets the normal velocity to −e times it).
+   */
+  private vnStop = new Float64Array(16);
   private sep = new Float64Array(16);
+  /**
+   * Per point: the largest gap from which it bounces in this sub-step: `penetrationSlop` for a
+   * point a speculative stop brought to the surface in the last sub-step, else 0 (a point still
+   * apart is stopped at the surface first and bounces from there one sub-step later).
+   */
+  private bounceGap = new Float64Array(16);
   private lambdaN = new Float64Array(16);
   private maxLambda = new Float64Array(16);
 
@@ -128,7 +142,16 @@ export class ContactSolver {
     this.rA = new Float64Array(D.n);
     this.rB = new Float64Array(D.n);
     this.centre = new Float64Array(D.n);
+    this.gravity = new Float64Array(D.n);
   }
+
+  /**
+   * The world's gravity (n numbers), which the world copies here every sub-step: restitution
+   * reads the relative normal acceleration of a contact (gravity and applied forces) to find the
+   * approach speed at the moment of impact (see `restitution`).
+   * @internal
+   */
+  readonly gravity: Float64Array;
 
   /** Count of contact points in the last sub-step's solve. */
   get pointCount(): number {
@@ -158,7 +181,9 @@ export class ContactSolver {
     this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);
     this.target = growFloat64(this.target, need, keep);
     this.vn0 = growFloat64(this.vn0, need, keep);
+    this.vnStop = growFloat64(this.vnStop, need, keep);
     this.sep = growFloat64(this.sep, need, keep);
+    this.bounceGap = growFloat64(this.bounceGap, need, keep);
     this.lambdaN = growFloat64(this.lambdaN, need, keep);
     this.maxLambda = growFloat64(this.maxLambda, need, keep);
   }
@@ -232,7 +257,24 @@ export class ContactSolver {
       const xB = B.x;
       const V = sb.v;
       const W = sb.w;
-      const bouncy = this.mfRestitution[mf] !== 0;
+      const e = this.mfRestitution[mf];
+      const bouncy = e !== 0;
+      // The relative acceleration of B against A along N in this sub-step (gravity and applied
+      // forces of dynamic bodies; torques are left out): restitution uses it to go back from the
+      // velocity after this sub-step's kick to the velocity at the moment of impact.
+      let accel = 0;
+      if (bouncy) {
+        const g = this.gravity;
+        const fA = A.motion === MOTION_DYNAMIC ? A.force : null;
+        const fB = B.motion === MOTION_DYNAMIC ? B.force : null;
+        const imA = A.invMass;
+        const imB = B.invMass;
+        for (let d = 0; d < n; d += 1) {
+          const aA = fA !== null ? g[d] + fA[d] * imA : 0;
+          const aB = fB !== null ? g[d] + fB[d] * imB : 0;
+          accel += N[d] * (aB - aA);
+        }
+      }
       for (let d = 0; d < n; d += 1) centre[d] = 0;
       for (let pq = 0; pq < count; pq += 1) {
         const cp = this.cpCount++;
@@ -253,10 +295,29 @@ export class ContactSolver {
           for (let pl = 0; pl < k; pl += 1) {
             vn += rows[base + n + k + pl] * W[b * k + pl] - rows[base + n + pl] * W[a * k + pl];
           }
+          // The motion in the sub-step is a parabola in the gap: vn is its slope at the middle of
+          // the sub-step, w0 = vn − a·h/2 its slope at the start, and it meets the surface (a gap
+          // s > 0 closed) with the slope w_i = −√(w0² − 2·a·s). The bounce leaves the surface with
+          // −e·w_i; the velocity that moves a body through the next sub-step on that parabola is
+          // its slope half a sub-step later, −e·w_i + a·h/2. vn0 holds that value over −e (the
+          // bounce's goal is −e·vn0) for a bounce now; vnStop the same for a bounce one sub-step
+          // later, when a speculative row stops the body at the surface in this one.
+          const s = man.separations[pq];
+          const w0 = vn - 0.5 * accel * h;
+          const shift = (0.5 * accel * h) / e;
+          const wNow = -Math.abs(w0);
+          const wStop = -Math.sqrt(Math.max(0, w0 * w0 - 2 * accel * Math.max(0, s)));
+          this.vnStop[cp] = vn < 0 ? wStop - shift : 0;
           // Restitution bounces from the faster of the approach now and the approach a
           // speculative contact stopped in the last sub-step (see ContactSet.approachSpeed).
-          this.vn0[cp] = Math.min(vn, contacts.approachSpeed[slot * P + pq]);
-        } else this.vn0[cp] = 0;
+          const recorded = contacts.approachSpeed[slot * P + pq];
+          this.vn0[cp] = Math.min(vn < 0 ? wNow - shift : vn, recorded);
+          this.bounceGap[cp] = recorded < 0 ? c[SOLVE_SLOP] : 0;
+        } else {
+          this.bounceGap[cp] = 0;
+          this.vn0[cp] = 0;
+          this.vnStop[cp] = 0;
+        }
         // The velocity target of the point.
         const s = man.separations[pq];
         this.sep[cp] = s;
@@ -1310,8 +1371,8 @@ export class ContactSolver {
   restitution(sb: SolverBodies): void {
     const { RS } = this;
     const c = this.constants;
-    const slop = c[SOLVE_SLOP];
     const threshold = c[SOLVE_THRESHOLD];
+    const tolerance = c[SOLVE_TOLERANCE];
     const tmp = this.tmp;
     const rows = this.rows;
     for (let mf = 0; mf < this.mfCount; mf += 1) {
@@ -1321,24 +1382,33 @@ export class ContactSolver {
       const b = this.mfB[mf];
       const first = this.mfFirst[mf];
       const last = first + this.mfPoints[mf];
-      for (let cp = first; cp < last; cp += 1) {
-        const v0 = this.vn0[cp];
-        if (v0 > -threshold || this.maxLambda[cp] === 0) continue;
-        const base = cp * RS;
-        this.rowVelocity(sb, base, a, b, tmp, 0);
-        // A point still short of the surface (a speculative stop) bounces in the next sub-step,
-        // from where it touches, with the approach speed the stop recorded.
-        if (this.sep[cp] > slop) continue;
-        const goal = -e * v0;
-        const mass = rows[base + RS - 3];
-        const old = this.lambdaN[cp];
-        const nl = Math.max(0, old + mass * (goal - tmp[0]));
-        this.lambdaN[cp] = nl;
-        const d = nl - old;
-        if (d !== 0) {
-          this.constants[SOLVE_LAMBDA] = d;
-          this.apply(sb, base, a, b, 1, 1);
+      // Gauss–Seidel sweeps over the bouncing points of the manifold until no row's velocity
+      // changes by more than the tolerance: the points of a face share one bounce, so a box that
+      // lands flat leaves flat (one sweep left most of the impulse on the first corner and spun it).
+      for (let sweep = 0; sweep < RESTITUTION_SWEEPS; sweep += 1) {
+        let change = 0;
+        for (let cp = first; cp < last; cp += 1) {
+          const v0 = this.vn0[cp];
+          if (v0 > -threshold || this.maxLambda[cp] === 0) continue;
+          // A point still short of the surface (a speculative stop) bounces in the next sub-step,
+          // from where it touches, with the approach speed the stop recorded.
+          if (this.sep[cp] > this.bounceGap[cp]) continue;
+          const base = cp * RS;
+          this.rowVelocity(sb, base, a, b, tmp, 0);
+          const goal = -e * v0;
+          const mass = rows[base + RS - 3];
+          const old = this.lambdaN[cp];
+          const nl = Math.max(0, old + mass * (goal - tmp[0]));
+          this.lambdaN[cp] = nl;
+          const d = nl - old;
+          if (d !== 0) {
+            const moved = mass > 0 ? Math.abs(d) / mass : 0;
+            if (moved > change) change = moved;
+            this.constants[SOLVE_LAMBDA] = d;
+            this.apply(sb, base, a, b, 1, 1);
+          }
         }
+        if (change <= tolerance) break;
       }
     }
   }
@@ -1356,7 +1426,7 @@ export class ContactSolver {
         const cp = first + pq;
         const ni = slot * P + pq;
         contacts.normalImpulse[ni] = this.lambdaN[cp];
-        contacts.approachSpeed[ni] = this.sep[cp] > this.constants[SOLVE_SLOP] && this.maxLambda[cp] > 0 ? this.vn0[cp] : 0;
+        contacts.approachSpeed[ni] = this.sep[cp] > this.bounceGap[cp] && this.maxLambda[cp] > 0 ? this.vnStop[cp] : 0;
       }
       // The patch as a world vector and a world bivector: they survive a change of tangent basis.
       const pb = mf * PR * RS;

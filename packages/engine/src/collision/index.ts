@@ -27,3 +27,4 @@ export { torusDistance } from './raycast-torus.js';
 export { queryOverlap, rayCastClosest, createIdList, createRayCastResult } from './query.js';
 export type { IdList, RayCastSource, RayCastResult } from './query.js';
 export * from './narrowphase.js';
+export { collideMeshBox, collideMeshMesh, polytopeSeparation } from './mesh-polytope.js';

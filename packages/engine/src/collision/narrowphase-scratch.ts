@@ -8,6 +8,7 @@
 import { checkNarrowphaseDimension, createManifold } from './manifold.js';
 import type { Manifold } from './manifold.js';
 import { trainShapeAccessors } from './shape-kind.js';
+import type { PolytopeScratch } from './convex-polytope.js';
 
 /** Tolerances of the narrowphase. Every threshold the pair functions use is one of these. */
 export interface NarrowphaseOptions {
@@ -156,6 +157,11 @@ export interface NarrowphaseScratch {
   readonly simplexBest: Float64Array;
   readonly simplexIndex: Int32Array;
   readonly simplexGram: Float64Array;
+  /**
+   * Convex mesh–box and mesh–mesh (GJK, EPA, face clipping; convex-polytope.ts): made on the
+   * first such pair and grown with the largest meshes seen, so a scene without them pays nothing.
+   */
+  polytope: PolytopeScratch | null;
 }
 
 /** Largest count of raw box–box clip candidates kept before reduction. */
@@ -258,6 +264,7 @@ export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions 
     simplexBest: new Float64Array(m),
     simplexIndex: new Int32Array(m),
     simplexGram: new Float64Array(m * m),
+    polytope: null,
   };
 }
 

@@ -573,9 +573,9 @@ describe('restore refuses bad bytes, naming the argument', () => {
     longer.set(good);
     expect(() => restoreWorld(longer)).toThrow(/'bytes' has 4 bytes past the end/);
     const other = good.slice();
-    new DataView(other.buffer).setUint32(4, 2, true);
+    new DataView(other.buffer).setUint32(4, 1, true);
     expect(() => restoreWorld(other)).toThrow(RangeError);
-    expect(() => restoreWorld(other)).toThrow(/'bytes' is a snapshot of format version 2; this build reads version 1/);
+    expect(() => restoreWorld(other)).toThrow(/'bytes' is a snapshot of format version 1; this build reads version 2/);
   });
 
   it('RangeError naming bytes for a well-framed snapshot whose contents are inconsistent', async () => {
@@ -586,7 +586,7 @@ describe('restore refuses bad bytes, naming the argument', () => {
     new DataView(bad.buffer).setUint32(12, fnv1a(bad, 16, bad.length), true);
     expect(() => restoreWorld(bad)).toThrow(/'bytes' is not a valid snapshot: the dimension is 9/);
     // A huge shape count fails at once (no allocation of its items): find the count after the
-    // parameters, gravity, clock and flag, and set it to 2^25.
+    // parameters, gravity, clock (time, steps, the remainder of advance) and flag, and set it to 2^25.
     const view = new DataView(good.buffer);
     let at = 17;
     const params = view.getUint32(at, true);
@@ -595,7 +595,7 @@ describe('restore refuses bad bytes, naming the argument', () => {
       at += 4 + view.getUint32(at, true);
       at += view.getUint8(at) === 1 ? 2 : 9;
     }
-    at += 3 * 8 + 8 + 8 + 1;
+    at += 3 * 8 + 8 + 8 + 8 + 1;
     expect(view.getUint32(at, true), 'the shape count').toBe(new Set(world.bodies.map((b) => b.shape)).size);
     const huge = good.slice();
     new DataView(huge.buffer).setUint32(at, 1 << 25, true);

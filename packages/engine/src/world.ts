@@ -142,8 +142,11 @@ export class WorldBase {
   private readonly scratch: WorldScratch;
   /** The scalars of the current sub-step, see `step-constants.ts`. */
   private readonly constants: Float64Array;
-  /** Simulated time (s) and completed steps, in typed storage so step() boxes no double. */
-  private readonly clock = new Float64Array(2);
+  /**
+   * Simulated time (s), completed steps, and the time {@link WorldBase.advance} has not yet
+   * stepped (s): in typed storage so step() boxes no double.
+   */
+  private readonly clock = new Float64Array(3);
 
   // ---- collision and contacts (see docs/solver.md) ----
   private readonly broadphase: Broadphase;
@@ -305,6 +308,49 @@ export class WorldBase {
   /** Number of completed steps. */
   get stepCount(): number {
     return this.clock[1]!;
+  }
+
+  /**
+   * How far the time given to {@link WorldBase.advance} has run into the next fixed step, in
+   * [0, 1): draw bodies at `previous + alpha·(current − previous)` for motion without judder.
+   */
+  get alpha(): number {
+    return Math.max(0, this.clock[2]! / this.currentParams.fixedTimeStep);
+  }
+
+  /**
+   * Advances the world by `elapsed` seconds of frame time in fixed steps of
+   * `params.fixedTimeStep`, as a frame loop should: the time left over carries into the next
+   * call, and at most `maxSteps` steps run (the backlog beyond them is dropped, so a slow frame
+   * cannot make the next one slower still). A world stepped this way with frames of any length
+   * goes through exactly the states of one stepped by `step()` alone: the step is what sets the
+   * accuracy, and a varying `dt` given to `step` would change it every frame (docs/engine.md,
+   * "Fixed steps"). The three.js adapter's `scene.simulate` accumulates the same way in the host.
+   *
+   * @param elapsed - seconds since the last call (finite, >= 0).
+   * @param maxSteps - most steps to run in this call (integer >= 1, default 4).
+   * @returns the number of steps run.
+   * @throws TypeError / RangeError for a bad `elapsed` or `maxSteps` (nothing changes);
+   *   NonFiniteStateError as {@link WorldBase.step} (the steps completed before it stay).
+   */
+  advance(elapsed: number, maxSteps = 4): number {
+    const fn = 'World.advance';
+    checkNumber('elapsed', elapsed, fn);
+    if (!(elapsed >= 0) || elapsed === Infinity) throw new RangeError(`${fn}: argument 'elapsed' must be a finite number >= 0 (s), got ${elapsed}`);
+    checkInteger('maxSteps', maxSteps, 1, Number.MAX_SAFE_INTEGER, fn);
+    const h = this.currentParams.fixedTimeStep;
+    const c = this.clock;
+    c[2] = c[2]! + elapsed;
+    let steps = 0;
+    // A step is due when the time left reaches h less rounding: three frames of 1/180 s make one
+    // step of 1/60 s although their float sum falls short of 1/60 by an ulp.
+    while (c[2]! >= h * (1 - 1e-9) && steps < maxSteps) {
+      this.step(h);
+      c[2] = c[2]! - h;
+      steps += 1;
+    }
+    if (c[2]! >= h) c[2] = c[2]! % h;
+    return steps;
   }
 
   /**

@@ -42,7 +42,10 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   const gravity = r.f64s(n);
   const time = r.f64();
   const steps = r.f64();
-  if (!Number.isFinite(time) || !(Number.isInteger(steps) && steps >= 0)) r.fail(`the clock (time ${time}, steps ${steps}) is not a finite time and a step count`);
+  const pending = r.f64();
+  if (!Number.isFinite(time) || !(Number.isInteger(steps) && steps >= 0) || !Number.isFinite(pending)) {
+    r.fail(`the clock (time ${time}, steps ${steps}, pending ${pending}) is not a finite time, a step count and a finite remainder`);
+  }
   const boundsStale = r.bool();
 
   let world: World;
@@ -108,6 +111,7 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   if (!r.done) r.fail('bytes are left after the last field');
   parts.clock[0] = time;
   parts.clock[1] = steps;
+  parts.clock[2] = pending;
   parts.setBoundsStale(boundsStale);
   return world;
 }

@@ -54,6 +54,7 @@ export function writeWorldSnapshot(world: World, parts: WorldParts): Uint8Array 
   w.f64s(world.gravity, 0, n);
   w.f64(parts.clock[0]!);
   w.f64(parts.clock[1]!);
+  w.f64(parts.clock[2]!);
   w.bool(parts.boundsStale);
 
   // Bodies that left the world but are still named by a pending end event.

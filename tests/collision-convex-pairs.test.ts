@@ -164,6 +164,29 @@ function axisSeparation(A: number[][], B: number[][], u: ArrayLike<number>): num
   return loB - hiA;
 }
 
+/** How far a world point lies outside the shape (the largest facet-plane distance; <= 0 inside). */
+function outside(n: number, poly: Poly, pose: Pose, p: number[]): number {
+  const local = new Array<number>(n).fill(0);
+  for (let c = 0; c < n; c += 1) for (let i = 0; i < n; i += 1) local[c] += pose.M[i * n + c]! * (p[i]! - pose.x[i]!);
+  const s = poly.shape as unknown as {
+    kind: string;
+    facetNormals?: Float64Array;
+    facetOffsets?: Float64Array;
+    halfExtents?: ArrayLike<number>;
+  };
+  let worst = -Infinity;
+  if (s.kind === 'mesh') {
+    for (let f = 0; f < s.facetOffsets!.length; f += 1) {
+      let d = -s.facetOffsets![f]!;
+      for (let c = 0; c < n; c += 1) d += s.facetNormals![f * n + c]! * local[c]!;
+      worst = Math.max(worst, d);
+    }
+  } else {
+    for (let c = 0; c < n; c += 1) worst = Math.max(worst, Math.abs(local[c]!) - s.halfExtents![c]!);
+  }
+  return worst;
+}
+
 function normalise(v: number[]): number[] {
   const l = Math.sqrt(dot(v, v));
   return v.map((x) => x / l);
@@ -325,6 +348,18 @@ describe('contact manifolds of mesh–box and mesh–mesh (seeded, n = 2..6)', (
         // and the deepest point carries the whole depth
         expect(deepest).toBeLessThan(sep + 1e-9);
         worstShallow = Math.max(worstShallow, deepest - sep);
+        // each point is midway between a point of A's surface and one of B's: p ∓ (s/2)·normal lie on
+        // or inside A and B (1e-9), and the one nearer its own shape touches its boundary
+        for (let p = 0; p < out.count; p += 1) {
+          const half = out.separations[p]! / 2;
+          const onA = Array.from({ length: n }, (_, i) => out.points[p * n + i]! - half * out.normal[i]!);
+          const onB = Array.from({ length: n }, (_, i) => out.points[p * n + i]! + half * out.normal[i]!);
+          const dA = outside(n, A, pa, onA);
+          const dB = outside(n, B, pb, onB);
+          expect(dA).toBeLessThan(1e-9);
+          expect(dB).toBeLessThan(1e-9);
+          expect(Math.max(dA, dB)).toBeGreaterThan(-1e-9);
+        }
         // the manifold normal separates as well as the face it came from: within the tie of the best
         expect(axisSeparation(worldVertices(n, A, pa), worldVertices(n, B, pb), out.normal)).toBeGreaterThan(sep - tie - 1e-9);
         if (!meshB) {

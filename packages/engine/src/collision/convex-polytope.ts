@@ -119,6 +119,12 @@ export interface PolytopeScratch {
   cO: Float64Array;
   cId: Int32Array;
   readonly comb: Int32Array;
+  /** Face clipping by half-spaces: the region's vertices (n each), their tight-constraint masks, heights; two buffers. */
+  clipV: Float64Array;
+  clipMask: Int32Array;
+  clipV2: Float64Array;
+  clipMask2: Int32Array;
+  clipS: Float64Array;
   /** Numbers passed between the kernels (a double argument or return value of a call V8 does not inline is boxed). */
   readonly scalars: Float64Array;
 }
@@ -181,6 +187,11 @@ export function createPolytopeScratch(n: number): PolytopeScratch {
     cO: new Float64Array(64),
     cId: new Int32Array(64),
     comb: new Int32Array(n),
+    clipV: new Float64Array(64 * n),
+    clipMask: new Int32Array(64),
+    clipV2: new Float64Array(64 * n),
+    clipMask2: new Int32Array(64),
+    clipS: new Float64Array(64),
     scalars: Float64Array.of(0, 0, 0, 0, 0, 1e-6, 1e-8, 0),
   };
 }
@@ -202,6 +213,22 @@ export function ensureClipCapacity(ps: PolytopeScratch, count: number): void {
   ps.cN = new Float64Array(cap * ps.n);
   ps.cO = new Float64Array(cap);
   ps.cId = new Int32Array(cap);
+}
+
+/** Makes room for `count` clip region vertices in both buffers (grows by doubling, keeps buffer 1). */
+export function ensureRegionCapacity(ps: PolytopeScratch, count: number): void {
+  if (ps.clipMask.length >= count) return;
+  const cap = Math.max(count, 2 * ps.clipMask.length);
+  const n = ps.n;
+  const V = new Float64Array(cap * n);
+  V.set(ps.clipV);
+  const mask = new Int32Array(cap);
+  mask.set(ps.clipMask);
+  ps.clipV = V;
+  ps.clipMask = mask;
+  ps.clipV2 = new Float64Array(cap * n);
+  ps.clipMask2 = new Int32Array(cap);
+  ps.clipS = new Float64Array(cap);
 }
 
 /** Loads B's pose relative to A: R = M_Aᵀ M_B, t = M_Aᵀ (x_B − x_A). */
@@ -741,19 +768,44 @@ function epa(n: number, ps: PolytopeScratch, scratch: NarrowphaseScratch): void 
     ps.supportCount = 0;
     return;
   }
-  // result: the nearest facet found last
+  // result: the nearest facet found last. Its plane is D's nearest facet plane, but the origin's
+  // projection q may lie in a coplanar neighbour (a facet of D made of several simplices): the
+  // witnesses come from the coplanar facet that holds q.
   const f = bestFacet;
   ps.status = POLY_OVERLAP;
   ps.separation = -ps.fO[f];
   for (let c = 0; c < n; c += 1) ps.normal[c] = ps.fN[f * n + c];
+  const q = ps.d;
+  for (let c = 0; c < n; c += 1) q[c] = ps.fO[f] * ps.fN[f * n + c];
   const fv = ps.facetVerts;
+  const holdTol = 1e-18 * ps.size * ps.size;
+  let holder = f;
+  for (let g = -1; g < facetCount; g += 1) {
+    // the best facet first, then its coplanar neighbours
+    const h = g < 0 ? f : g;
+    if (g >= 0) {
+      if (g === f) continue;
+      let dot = 0;
+      for (let c = 0; c < n; c += 1) dot += ps.fN[g * n + c] * ps.fN[f * n + c];
+      if (dot < 1 - 1e-9 || Math.abs(ps.fO[g] - ps.fO[f]) > tol) continue;
+    }
+    for (let k = 0; k < n; k += 1) {
+      const pk = ps.facets[h * n + k];
+      for (let c = 0; c < n; c += 1) fv[k * n + c] = P[pk * n + c];
+    }
+    closestPointOnSimplexKernel(n, ps.w, fv, n, q, scratch);
+    if (scratch.scalars[3] <= holdTol) {
+      holder = h;
+      break;
+    }
+  }
   for (let k = 0; k < n; k += 1) {
-    const pk = ps.facets[f * n + k];
+    const pk = ps.facets[holder * n + k];
     for (let c = 0; c < n; c += 1) fv[k * n + c] = P[pk * n + c];
     ps.simplexA[k] = ps.ptA[pk];
     ps.simplexB[k] = ps.ptB[pk];
   }
-  closestPointOnSimplexKernel(n, ps.w, fv, n, ps.zero, scratch);
+  closestPointOnSimplexKernel(n, ps.w, fv, n, q, scratch);
   witnessesFrom(n, ps, ps.simplexA, ps.simplexB, scratch.simplexBest, n);
 }
 

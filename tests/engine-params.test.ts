@@ -36,6 +36,7 @@ const table: Record<string, number | boolean> = {
   angularDamping: 0,
   manifoldReuseTolerance: 1e-4,
   solverTolerance: 1e-9,
+  lengthUnit: 1,
 };
 
 describe('defaultParams', () => {
@@ -99,6 +100,8 @@ describe('validateParams', () => {
     ['manifoldReuseTolerance', '1e-4', 'TypeError'],
     ['solverTolerance', -1e-9, 'RangeError'],
     ['solverTolerance', Number.NaN, 'RangeError'],
+    ['lengthUnit', 0, 'RangeError'],
+    ['lengthUnit', 1e7, 'RangeError'],
   ];
   for (const [name, value, kind] of bad) {
     it(`${name} = ${String(value)} throws a ${kind} naming '${name}'`, () => {

@@ -102,6 +102,17 @@ export interface Params {
    * docs/solver.md, "Early exit".
    */
   readonly solverTolerance: number;
+  /**
+   * The length of one unit of the scene (m, > 0; default 1): every length tolerance of the engine
+   * is multiplied by it — `penetrationSlop`, `contactMargin`, `constraintSlop`,
+   * `constraintTolerance`, `manifoldReuseTolerance`, the broadphase margin and the narrowphase's
+   * feature tie tolerance — and so is every speed threshold (`restitutionThreshold`,
+   * `sleepLinearVelocity`, `solverTolerance`). A scene of 1 cm dice takes `lengthUnit: 0.01` and
+   * then behaves as a scene of 1 m boxes does with 1 (docs/engine.md, "Scale"). The other
+   * parameters keep their values as given. Set when the world is built (`new World`); `setParams`
+   * refuses to change it, as the broadphase's boxes are grown by it.
+   */
+  readonly lengthUnit: number;
 }
 
 /** The defaults of every parameter (frozen). */
@@ -135,6 +146,7 @@ export const defaultParams: Readonly<Params> = Object.freeze({
   angularDamping: 0,
   manifoldReuseTolerance: 1e-4,
   solverTolerance: 1e-9,
+  lengthUnit: 1,
 });
 
 /** Upper bound of the integer counts (sub-steps, iterations): a guard against typos such as 1e9. */
@@ -182,6 +194,7 @@ const rules: { readonly [K in keyof Params]: Rule } = {
   angularDamping: nonNegative,
   manifoldReuseTolerance: nonNegative,
   solverTolerance: nonNegative,
+  lengthUnit: { kind: 'number', min: 1e-6, max: 1e6 },
 };
 
 /** The names of every parameter, in the order of the specification's table. */
@@ -252,6 +265,30 @@ export function mergeParams(base: Readonly<Params>, partial?: unknown, where = '
   if (partial === undefined) return Object.freeze({ ...base });
   validateParams(partial, where);
   return Object.freeze({ ...base, ...partial });
+}
+
+/** The parameters that are lengths (m) or speeds (m/s): {@link Params.lengthUnit} scales them. */
+const LENGTH_PARAMS = [
+  'penetrationSlop',
+  'contactMargin',
+  'constraintSlop',
+  'constraintTolerance',
+  'manifoldReuseTolerance',
+  'restitutionThreshold',
+  'sleepLinearVelocity',
+  'solverTolerance',
+] as const;
+
+/**
+ * @internal The parameters as the step reads them: every length and speed tolerance multiplied by
+ * `lengthUnit` (the same object back when the unit is 1).
+ */
+export function scaledParams(p: Readonly<Params>): Readonly<Params> {
+  const unit = p.lengthUnit;
+  if (unit === 1) return p;
+  const out: Record<string, number | boolean> = { ...p };
+  for (const name of LENGTH_PARAMS) out[name] = p[name] * unit;
+  return Object.freeze(out) as unknown as Readonly<Params>;
 }
 
 /**

@@ -12,7 +12,8 @@ import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
 import { createPose } from './collision/manifold.js';
-import { createNarrowphaseScratch } from './collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
+import { DEFAULT_BROADPHASE_MARGIN } from './collision/broadphase-constants.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import { ContactEvents } from './contacts/contact-events.js';
@@ -44,7 +45,7 @@ import {
 import { integrateVelocities } from './integrator/velocities.js';
 import type { Joint, JointOwner } from './joints/joint.js';
 import type { JointSolver } from './joints/joint-solver.js';
-import { defaultParams, mergeParams } from './params.js';
+import { defaultParams, mergeParams, scaledParams } from './params.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
 
@@ -135,6 +136,8 @@ export class WorldBase {
   readonly n: number;
 
   private currentParams: Readonly<Params>;
+  /** The parameters as the step reads them: lengths and speeds times `lengthUnit` (params.ts). */
+  private stepParams: Readonly<Params>;
   private readonly gravityValue: Float64Array;
   private readonly bodyList: Body[] = [];
   private bodyView: readonly Body[] = Object.freeze([]);
@@ -219,6 +222,7 @@ export class WorldBase {
     this.D = D;
     this.n = D.n;
     this.currentParams = params;
+    this.stepParams = scaledParams(params);
     this.gravityValue = new Float64Array(D.n);
     if (options.gravity !== undefined) this.gravityValue.set(options.gravity);
     this.stepState = createStepSnapshot(Body.stateLength(D));
@@ -231,8 +235,9 @@ export class WorldBase {
       speeds: new Float64Array(2),
     };
     this.constants = createStepConstants();
-    this.broadphase = new TreeBroadphase(D.n);
-    this.narrowScratch = createNarrowphaseScratch(D.n);
+    const unit = params.lengthUnit;
+    this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
+    this.narrowScratch = createNarrowphaseScratch(D.n, { featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit });
     this.contacts = new ContactSet(D.n);
     this.solverBodies = new SolverBodies(D);
     this.solver = new ContactSolver(D);
@@ -279,7 +284,12 @@ export class WorldBase {
    * names, types, ranges) and nothing changes if any entry is bad.
    */
   setParams(partial: Partial<Params>): this {
-    this.currentParams = mergeParams(this.currentParams, partial, 'World.setParams');
+    const merged = mergeParams(this.currentParams, partial, 'World.setParams');
+    if (merged.lengthUnit !== this.currentParams.lengthUnit) {
+      throw new RangeError(`World.setParams: parameter 'lengthUnit' is set when the world is built (new World); got ${merged.lengthUnit}, the world has ${this.currentParams.lengthUnit}`);
+    }
+    this.currentParams = merged;
+    this.stepParams = scaledParams(merged);
     return this;
   }
 
@@ -547,7 +557,7 @@ export class WorldBase {
     const dt = timeStep === undefined ? this.currentParams.fixedTimeStep : +timeStep;
     if (!(dt > 0) || dt === Infinity) throwBadTimeStep(dt);
     const D = this.D;
-    const p = this.currentParams;
+    const p = this.stepParams;
     const bodies = this.bodyList;
     const subSteps = p.subSteps;
     const h = dt / subSteps;

@@ -114,6 +114,10 @@ export interface PolytopeScratch {
   readonly centre: Float64Array;
   ridges: Int32Array;
   ridgeCount: Int32Array;
+  /** Open-addressing table of the ridges of one EPA iteration: ridge index, and the iteration that wrote the slot. */
+  ridgeTable: Int32Array;
+  ridgeStamp: Int32Array;
+  epoch: number;
   // face clipping (mesh-polytope.ts)
   cN: Float64Array;
   cO: Float64Array;
@@ -183,6 +187,9 @@ export function createPolytopeScratch(n: number): PolytopeScratch {
     centre: new Float64Array(n),
     ridges: new Int32Array(facetCapacity * n * (n - 1)),
     ridgeCount: new Int32Array(facetCapacity * n),
+    ridgeTable: new Int32Array(tableSize(facetCapacity * n)),
+    ridgeStamp: new Int32Array(tableSize(facetCapacity * n)),
+    epoch: 0,
     cN: new Float64Array(64 * n),
     cO: new Float64Array(64),
     cId: new Int32Array(64),
@@ -600,6 +607,9 @@ function growFacets(ps: PolytopeScratch, n: number, need: number): void {
   ps.fDead = fDead;
   ps.ridges = new Int32Array(cap * n * (n - 1));
   ps.ridgeCount = new Int32Array(cap * n);
+  ps.ridgeTable = new Int32Array(tableSize(cap * n));
+  ps.ridgeStamp = new Int32Array(tableSize(cap * n));
+  ps.epoch = 0;
   ps.facetCapacity = cap;
 }
 
@@ -704,11 +714,23 @@ function epa(n: number, ps: PolytopeScratch, scratch: NarrowphaseScratch): void 
     // horizon ridges: ridges (sorted n−1 tuples) of removed facets that bound exactly one of them
     const rl = n - 1;
     let ridgeCount = 0;
+    // a new stamp empties the ridge table (wrapping after 2³¹ iterations: clear it then)
+    ps.epoch = (ps.epoch + 1) | 0;
+    if (ps.epoch === 0) {
+      ps.ridgeStamp.fill(0);
+      ps.epoch = 1;
+    }
     for (let f = 0; f < facetCount; f += 1) {
       if (!ps.fDead[f]) continue;
       for (let skip = 0; skip < n; skip += 1) {
+        // FNV-1a of the sorted tuple, then linear probing among this iteration's slots
+        let key = 0x811c9dc5;
+        for (let k = 0; k < n; k += 1) if (k !== skip) key = Math.imul(key ^ ps.facets[f * n + k], 0x01000193);
+        const mask = ps.ridgeTable.length - 1;
+        let slot = key & mask;
         let found = -1;
-        for (let r = 0; r < ridgeCount && found < 0; r += 1) {
+        while (ps.ridgeStamp[slot] === ps.epoch) {
+          const r = ps.ridgeTable[slot];
           let same = true;
           for (let j = 0, k = 0; k < n; k += 1) {
             if (k === skip) continue;
@@ -718,7 +740,11 @@ function epa(n: number, ps: PolytopeScratch, scratch: NarrowphaseScratch): void 
             }
             j += 1;
           }
-          if (same) found = r;
+          if (same) {
+            found = r;
+            break;
+          }
+          slot = (slot + 1) & mask;
         }
         if (found >= 0) {
           ps.ridgeCount[found] += 1;
@@ -726,6 +752,8 @@ function epa(n: number, ps: PolytopeScratch, scratch: NarrowphaseScratch): void 
         }
         for (let j = 0, k = 0; k < n; k += 1) if (k !== skip) ps.ridges[ridgeCount * rl + j++] = ps.facets[f * n + k];
         ps.ridgeCount[ridgeCount] = 1;
+        ps.ridgeStamp[slot] = ps.epoch;
+        ps.ridgeTable[slot] = ridgeCount;
         ridgeCount += 1;
       }
     }
@@ -807,6 +835,13 @@ function epa(n: number, ps: PolytopeScratch, scratch: NarrowphaseScratch): void 
   }
   closestPointOnSimplexKernel(n, ps.w, fv, n, q, scratch);
   witnessesFrom(n, ps, ps.simplexA, ps.simplexB, scratch.simplexBest, n);
+}
+
+/** A power of two at least twice `count` (the ridge table's load stays under one half). */
+function tableSize(count: number): number {
+  let size = 16;
+  while (size < 2 * count) size *= 2;
+  return size;
 }
 
 function growFacetsKeepRidges(ps: PolytopeScratch, n: number, need: number, ridgeCount: number): void {

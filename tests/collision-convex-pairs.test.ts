@@ -380,6 +380,50 @@ describe('contact manifolds of mesh–box and mesh–mesh (seeded, n = 2..6)', (
   }
 });
 
+describe('a face of many vertices (a prism over an 80-gon, 3D)', () => {
+  it('a box resting on its cap, turned: 4 points at the box corners, at the overlap (1e-12), inside both shapes', () => {
+    const D = dims(3);
+    const N = 80;
+    const vertices: number[][] = [];
+    for (const y of [0.1, -0.1])
+      for (let i = 0; i < N; i += 1)
+        vertices.push([0.5 * Math.cos((2 * Math.PI * i) / N), y, 0.5 * Math.sin((2 * Math.PI * i) / N)]);
+    const facets: number[][] = [];
+    for (let i = 1; i < N - 1; i += 1) facets.push([0, i, i + 1], [N, N + i + 1, N + i]);
+    for (let i = 0; i < N; i += 1) {
+      const j = (i + 1) % N;
+      facets.push([i, j, N + i], [j, N + j, N + i]);
+    }
+    const prism: Poly = { shape: ConvexMesh(D, vertices, facets) as Shape & CollidableShape, local: [] };
+    prism.local = localVertices(prism.shape);
+    const box: Poly = { shape: HyperBox(D, [0.3, 0.1, 0.2]) as Shape & CollidableShape, local: [] };
+    box.local = localVertices(box.shape);
+    const pa = createPose(3);
+    const pb = createPose(3);
+    const angle = 0.2;
+    pb.M.set([Math.cos(angle), 0, Math.sin(angle), 0, 1, 0, -Math.sin(angle), 0, Math.cos(angle)]);
+    pb.x.set([0.02, 0.1 + 0.1 - 0.01, -0.03]);
+    const scratch = createNarrowphaseScratch(3);
+    for (const [A, poseA, B, poseB, sign] of [
+      [prism, pa, box, pb, 1],
+      [box, pb, prism, pa, -1],
+    ] as const) {
+      const out = createManifold(3);
+      expect(collide(out, 3, A.shape, poseA, B.shape, poseB, 0.02, scratch)).toBe(true);
+      expect(out.count).toBe(4);
+      expect(Math.abs(out.normal[1]! - sign)).toBeLessThan(1e-12);
+      for (let p = 0; p < 4; p += 1) {
+        expect(Math.abs(out.separations[p]! + 0.01)).toBeLessThan(1e-12);
+        const half = out.separations[p]! / 2;
+        const onA = [0, 1, 2].map((i) => out.points[p * 3 + i]! - half * out.normal[i]!);
+        const onB = [0, 1, 2].map((i) => out.points[p * 3 + i]! + half * out.normal[i]!);
+        expect(Math.abs(outside(3, A, poseA, onA))).toBeLessThan(1e-12);
+        expect(Math.abs(outside(3, B, poseB, onB))).toBeLessThan(1e-12);
+      }
+    }
+  });
+});
+
 describe('GJK / EPA signed distance against brute force (seeded, n = 2..5)', () => {
   const worst = { sep: 0, normal: 0 };
   for (const n of [2, 3, 4, 5]) {

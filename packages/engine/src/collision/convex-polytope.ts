@@ -213,29 +213,41 @@ export function polytopeScratch(scratch: NarrowphaseScratch): PolytopeScratch {
   return ps;
 }
 
-/** Makes room for the clip constraints (grows by doubling). */
+/** Makes room for the clip constraints (grows by doubling, keeps those held). */
 export function ensureClipCapacity(ps: PolytopeScratch, count: number): void {
   if (ps.cO.length >= count) return;
   const cap = Math.max(count, 2 * ps.cO.length);
-  ps.cN = new Float64Array(cap * ps.n);
-  ps.cO = new Float64Array(cap);
-  ps.cId = new Int32Array(cap);
+  const cN = new Float64Array(cap * ps.n);
+  cN.set(ps.cN);
+  const cO = new Float64Array(cap);
+  cO.set(ps.cO);
+  const cId = new Int32Array(cap);
+  cId.set(ps.cId);
+  ps.cN = cN;
+  ps.cO = cO;
+  ps.cId = cId;
 }
 
-/** Makes room for `count` clip region vertices in both buffers (grows by doubling, keeps buffer 1). */
+/** Makes room for `count` clip region vertices in every clip buffer (grows by doubling, keeps their contents). */
 export function ensureRegionCapacity(ps: PolytopeScratch, count: number): void {
   if (ps.clipMask.length >= count) return;
   const cap = Math.max(count, 2 * ps.clipMask.length);
   const n = ps.n;
   const V = new Float64Array(cap * n);
   V.set(ps.clipV);
+  const V2 = new Float64Array(cap * n);
+  V2.set(ps.clipV2);
   const mask = new Int32Array(cap);
   mask.set(ps.clipMask);
+  const mask2 = new Int32Array(cap);
+  mask2.set(ps.clipMask2);
+  const S = new Float64Array(cap);
+  S.set(ps.clipS);
   ps.clipV = V;
+  ps.clipV2 = V2;
   ps.clipMask = mask;
-  ps.clipV2 = new Float64Array(cap * n);
-  ps.clipMask2 = new Int32Array(cap);
-  ps.clipS = new Float64Array(cap);
+  ps.clipMask2 = mask2;
+  ps.clipS = S;
 }
 
 /** Loads B's pose relative to A: R = M_Aᵀ M_B, t = M_Aᵀ (x_B − x_A). */

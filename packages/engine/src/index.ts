@@ -12,7 +12,7 @@
  */
 export { World } from './world-nd.js';
 export { WorldBase } from './world.js';
-export type { WorldOptions } from './world.js';
+export type { WorldOptions, WorldStats } from './world.js';
 export { castRay, queryBox } from './queries.js';
 export type { WorldRayHit } from './queries.js';
 export { snapshotWorld, restoreWorld } from './snapshot/snapshot.js';

@@ -5,7 +5,7 @@
  */
 import { checkInteger, checkNumber, checkVector, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
-import { Body, MOTION_STATIC } from './body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC } from './body.js';
 import type { BodyOwner } from './body.js';
 import { computeBoundsUnchecked } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
@@ -48,6 +48,29 @@ import type { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams, scaledParams } from './params.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
+
+/** What a world holds and what its last sub-step did, counted ({@link WorldBase.stats}). */
+export interface WorldStats {
+  /** Bodies in the world. */
+  readonly bodies: number;
+  /** Dynamic bodies that are awake (integrated and solved). */
+  readonly awakeBodies: number;
+  /** Joints in the world. */
+  readonly joints: number;
+  /** Pairs of bodies whose grown boxes overlap (the broadphase's pair set, sleeping pairs included). */
+  readonly pairs: number;
+  /** Contact pairs the world keeps (touching or within the contact margin). */
+  readonly contacts: number;
+  /** Contact pairs whose manifold has a point closer than the contact margin. */
+  readonly touching: number;
+  /** Contact points the solver took in the last sub-step. */
+  readonly contactPoints: number;
+  /**
+   * Passes of the velocity solve in the last sub-step: at most `params.iterations` (fewer when the
+   * contacts converged early); 0 when there was nothing to solve.
+   */
+  readonly solverPasses: number;
+}
 
 /** Options of `new World(options)`. */
 export interface WorldOptions {
@@ -140,7 +163,8 @@ export class WorldBase {
   private stepParams: Readonly<Params>;
   private readonly gravityValue: Float64Array;
   private readonly bodyList: Body[] = [];
-  private bodyView: readonly Body[] = Object.freeze([]);
+  /** The frozen copy `bodies` returns; null when the list changed since it was made. */
+  private bodyView: readonly Body[] | null = null;
   private readonly stepState: StepSnapshot;
   private readonly scratch: WorldScratch;
   /** The scalars of the current sub-step, see `step-constants.ts`. */
@@ -159,6 +183,8 @@ export class WorldBase {
   private readonly solverBodies: SolverBodies;
   private readonly solver: ContactSolver;
   private readonly islands = new Islands();
+  /** Passes of the velocity solve in the last sub-step (a count for `stats`, not state). */
+  private solverPasses = 0;
   // ---- joints (see docs/joints.md) ----
   private readonly jointList: Joint[] = [];
   private jointView: readonly Joint[] = Object.freeze([]);
@@ -307,7 +333,27 @@ export class WorldBase {
 
   /** The bodies, in the order they were added (a frozen array, replaced when the list changes). */
   get bodies(): readonly Body[] {
-    return this.bodyView;
+    // Made when asked for, not on every add: adding N bodies copied the list N times (O(N²)).
+    return (this.bodyView ??= Object.freeze(this.bodyList.slice()));
+  }
+
+  /**
+   * What the world holds and what its last sub-step did, counted: for profiling, and for tests
+   * that would otherwise read private fields. A fresh object per call (not for the hot path).
+   */
+  get stats(): WorldStats {
+    let awake = 0;
+    for (const body of this.bodyList) if (body.motion === MOTION_DYNAMIC && !body.sleeping) awake += 1;
+    return Object.freeze({
+      bodies: this.bodyList.length,
+      awakeBodies: awake,
+      joints: this.jointList.length,
+      pairs: this.broadphase.pairCount,
+      contacts: this.contacts.count,
+      touching: this.touchingCount,
+      contactPoints: this.solver.pointCount,
+      solverPasses: this.solverPasses,
+    });
   }
 
   /** Simulated time (s): the sum of the dt of every completed step. */
@@ -402,7 +448,7 @@ export class WorldBase {
     body.sleepTimer = 0;
     body.poseDirty = false;
     this.bodyList.push(body);
-    this.bodyView = Object.freeze(this.bodyList.slice());
+    this.bodyView = null;
     this.reach[body.worldIndex] = 0;
     const bp = this.broadphase;
     body.proxyId = isHalfSpace
@@ -423,7 +469,7 @@ export class WorldBase {
     if (!(body instanceof Body)) {
       throw new TypeError(`${fn}: argument 'body' must be a Body, got ${body === null ? 'null' : typeof body}`);
     }
-    const index = body.owner === this.owner ? this.bodyList.indexOf(body) : -1;
+    const index = body.owner === this.owner ? body.worldIndex : -1;
     if (index < 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is not in this world`);
     }
@@ -439,7 +485,7 @@ export class WorldBase {
     body.worldIndex = -1;
     body.sleeping = false;
     body.owner = null;
-    this.bodyView = Object.freeze(this.bodyList.slice());
+    this.bodyView = null;
     return this;
   }
 
@@ -734,12 +780,15 @@ export class WorldBase {
     // joints.count): a world whose last joint was removed hung in its next step.
     if (joints !== null && this.jointList.length === 0) joints.count = 0;
     const jointCount = joints !== null && this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
+    this.solverPasses = 0;
     if (joints === null || jointCount === 0) {
       if (joints !== null) joints.brokenCount = 0;
       if (points === 0) return;
       if (p.useWarmStart) solver.warmStart(sb);
       solver.solve(sb, p.iterations);
+      this.solverPasses = solver.passesRun;
     } else {
+      this.solverPasses = p.iterations;
       if (p.useWarmStart) {
         joints.warmStart(sb);
         if (points > 0) solver.warmStart(sb);

@@ -380,6 +380,33 @@ describe('contact manifolds of mesh–box and mesh–mesh (seeded, n = 2..6)', (
   }
 });
 
+describe('faces flush: a cube as a mesh (coplanar simplices) on a box or on itself, n = 2..6', () => {
+  for (const n of [2, 3, 4, 5, 6]) {
+    it(`n = ${n}: overlapping, touching and apart within the margin: exact separation, the whole face (2^(n−1) points)`, () => {
+      const D = dims(n);
+      const cube = cubeBoundary(n, new Array<number>(n).fill(0.15));
+      const mesh = ConvexMesh(D, cube.vertices, cube.facets) as Shape & CollidableShape;
+      const box = HyperBox(D, new Array<number>(n).fill(0.15)) as Shape & CollidableShape;
+      const scratch = createNarrowphaseScratch(n);
+      const out = createManifold(n);
+      for (const B of [box, mesh]) {
+        for (const y of [0.1, 0.29, 0.3, 0.305, 0.31]) {
+          const pa = createPose(n);
+          const pb = createPose(n);
+          pb.x[0] = 0.05;
+          pb.x[1] = y;
+          const normal = new Float64Array(n);
+          expect(Math.abs(polytopeSeparation(n, mesh, pa, B, pb, normal) - (y - 0.3))).toBeLessThan(1e-12);
+          expect(collide(out, n, mesh, pa, B, pb, 0.02, scratch)).toBe(true);
+          expect(out.count).toBe(2 ** (n - 1));
+          expect(out.normal[1]).toBe(1);
+          for (let p = 0; p < out.count; p += 1) expect(Math.abs(out.separations[p]! - (y - 0.3))).toBeLessThan(1e-12);
+        }
+      }
+    });
+  }
+});
+
 describe('a face of many vertices (a prism over an 80-gon, 3D)', () => {
   it('a box resting on its cap, turned: 4 points at the box corners, at the overlap (1e-12), inside both shapes', () => {
     const D = dims(3);

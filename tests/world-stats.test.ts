@@ -52,4 +52,33 @@ describe('world.stats', () => {
     expect(world.bodies).toEqual(bodies.slice(0, 1000).filter((_, i) => i !== 7));
     world.bodies.forEach((b, i) => expect(world.bodies[i]).toBe(b));
   });
+
+  it('removing bodies from the front, the middle and the back keeps the order, and the world steps on', () => {
+    const D = dims(3);
+    const make = (): { world: World; balls: Body[] } => {
+      const world = new World({ dimensions: 3, gravity: [0, -9.81, 0] });
+      world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
+      const balls = Array.from({ length: 30 }, (_, i) => world.addBody(new Body(D, { shape: HyperSphere(D, 0.25), mass: 1, position: [i % 5, 0.25 + Math.floor(i / 5) * 0.5, 0] })));
+      return { world, balls };
+    };
+    const a = make();
+    const b = make();
+    for (let s = 0; s < 30; s += 1) {
+      a.world.step(1 / 60);
+      b.world.step(1 / 60);
+    }
+    // a loses them one at a time with steps between; b loses the same bodies all at once.
+    const gone = [0, 29, 14, 15, 3];
+    for (const i of gone) a.world.removeBody(a.balls[i]!);
+    for (const i of gone) b.world.removeBody(b.balls[i]!);
+    const kept = (balls: Body[]): Body[] => balls.filter((_, i) => !gone.includes(i));
+    expect(a.world.bodies.slice(1)).toEqual(kept(a.balls));
+    expect(a.world.bodies.map((body) => body.worldIndex)).toEqual(a.world.bodies.map((_, i) => i));
+    for (let s = 0; s < 60; s += 1) {
+      a.world.step(1 / 60);
+      b.world.step(1 / 60);
+    }
+    expect(a.world.bodies.flatMap((body) => [...body.x])).toEqual(b.world.bodies.flatMap((body) => [...body.x]));
+    expect(a.world.stats.bodies).toBe(26);
+  });
 });

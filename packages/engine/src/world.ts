@@ -162,7 +162,14 @@ export class WorldBase {
   /** The parameters as the step reads them: lengths and speeds times `lengthUnit` (params.ts). */
   private stepParams: Readonly<Params>;
   private readonly gravityValue: Float64Array;
+  /**
+   * The bodies in the order they were added. `removeBody` leaves a hole (null) in O(1) instead of
+   * shifting every later body; `compact()` closes the holes in one pass before anything iterates
+   * the list (the step, queries, snapshots, `bodies`), so removing N bodies costs O(N), not O(N²).
+   */
   private readonly bodyList: Body[] = [];
+  /** Holes `removeBody` left in `bodyList` since the last `compact()`. */
+  private holes = 0;
   /** The frozen copy `bodies` returns; null when the list changed since it was made. */
   private bodyView: readonly Body[] | null = null;
   private readonly stepState: StepSnapshot;
@@ -334,6 +341,7 @@ export class WorldBase {
   /** The bodies, in the order they were added (a frozen array, replaced when the list changes). */
   get bodies(): readonly Body[] {
     // Made when asked for, not on every add: adding N bodies copied the list N times (O(N²)).
+    this.compact();
     return (this.bodyView ??= Object.freeze(this.bodyList.slice()));
   }
 
@@ -342,6 +350,7 @@ export class WorldBase {
    * that would otherwise read private fields. A fresh object per call (not for the hot path).
    */
   get stats(): WorldStats {
+    this.compact();
     let awake = 0;
     for (const body of this.bodyList) if (body.motion === MOTION_DYNAMIC && !body.sleeping) awake += 1;
     return Object.freeze({
@@ -476,8 +485,10 @@ export class WorldBase {
     if (body.jointCount > 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is held by ${body.jointCount} joint(s) of this world; remove them first (World.removeConstraint)`);
     }
-    this.bodyList.splice(index, 1);
-    for (let i = index; i < this.bodyList.length; i += 1) this.bodyList[i]!.worldIndex = i;
+    // A hole, closed by compact() before the list is next iterated (the type says Body: no code
+    // reads the list between here and there).
+    this.bodyList[index] = null as unknown as Body;
+    this.holes += 1;
     this.contacts.removeBody(body, this.events);
     this.broadphase.destroyProxy(body.proxyId);
     this.bodyOfProxy[body.proxyId] = null;
@@ -602,6 +613,7 @@ export class WorldBase {
     if (timeStep !== undefined && typeof timeStep !== 'number') throwBadTimeStep(timeStep);
     const dt = timeStep === undefined ? this.currentParams.fixedTimeStep : +timeStep;
     if (!(dt > 0) || dt === Infinity) throwBadTimeStep(dt);
+    this.compact();
     const D = this.D;
     const p = this.stepParams;
     const bodies = this.bodyList;
@@ -649,6 +661,7 @@ export class WorldBase {
 
   /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
   snapshotParts(): WorldParts {
+    this.compact();
     return {
       clock: this.clock,
       reach: this.reach,
@@ -664,6 +677,27 @@ export class WorldBase {
   }
 
   // ---- the stages behind step() ----
+
+  /**
+   * Closes the holes of `bodyList` in one pass, keeping the order; renumbers the bodies and moves
+   * their reach along. O(bodies) once after any number of removals.
+   */
+  private compact(): void {
+    if (this.holes === 0) return;
+    const list = this.bodyList;
+    const reach = this.reach;
+    let o = 0;
+    for (let i = 0; i < list.length; i += 1) {
+      const body = list[i];
+      if (body === null || body === undefined) continue;
+      body.worldIndex = o;
+      reach[o] = reach[i]!;
+      list[o] = body;
+      o += 1;
+    }
+    list.length = o;
+    this.holes = 0;
+  }
 
   /** pose.x = body.x, pose.M = the matrix of body.R. */
   private updatePose(body: Body): void {
@@ -887,6 +921,7 @@ export class WorldBase {
 
   /** Brings every broadphase box up to the bodies' poses (before a query). */
   private refreshBounds(): void {
+    this.compact();
     if (!this.boundsStale) {
       let dirty = false;
       for (const body of this.bodyList) if (body.poseDirty) dirty = true;

@@ -17,6 +17,8 @@ import type { Dims } from '@physin/algebra';
 import { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';
 import { bodyDefaults, ROTOR_INPUT_TOLERANCE } from './params.js';
 import type { Shape } from './shapes/shape.js';
+import { checkComponents, formatBound, inputLimits } from './shapes/limits.js';
+import type { InputLimits } from './shapes/limits.js';
 import type { Pose } from './collision/manifold.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
@@ -113,6 +115,8 @@ interface BodyScratch {
   readonly omega: Float64Array;
   readonly tmp: Float64Array;
   readonly vector: Float64Array;
+  /** k numbers, an angular acceleration I_world⁻¹ τ (the current one, beside `omega`'s new one). */
+  readonly alpha: Float64Array;
   /** r numbers, for setRotor / getRotor. */
   readonly rotor: Float64Array;
   /** n numbers, the described origin kept by setRotor. */
@@ -123,6 +127,7 @@ function scratchFor(D: Dims): BodyScratch {
   return (scratchByN[D.n] ??= {
     bivector: new Float64Array(D.k),
     omega: new Float64Array(D.k),
+    alpha: new Float64Array(D.k),
     tmp: new Float64Array(D.k),
     vector: new Float64Array(D.n),
     rotor: new Float64Array(D.r),
@@ -163,16 +168,69 @@ function isZero(a: ArrayLike<number>): boolean {
   return true;
 }
 
-/** out += a ∧ b: (a∧b)_ij = a_i b_j − a_j b_i. */
 /**
- * Throws a RangeError naming `name` unless base + scale·add stays finite in every component (a
- * call must never put a non-finite number into a body: two impulses of 1e308 would).
+ * Throws a RangeError naming `name` unless base + scale·add stays within ±`max` in every component
+ * (or, for a component already beyond it, does not grow): a call must never put a non-finite
+ * number into a body (two impulses of 1e308 would), nor a value whose next step could overflow.
  */
-function checkSumFinite(fn: string, name: string, label: string, field: string, base: Float64Array, add: ArrayLike<number>, scale: number): void {
+function checkSumBounded(
+  fn: string,
+  name: string,
+  label: string,
+  field: string,
+  base: Float64Array,
+  add: ArrayLike<number>,
+  scale: number,
+  max: number,
+  unit: string,
+): void {
   for (let i = 0; i < base.length; i += 1) {
-    if (!Number.isFinite(base[i]! + add[i]! * scale)) {
-      throw new RangeError(`${fn}: argument '${name}' would make ${label}'s ${field} non-finite (component ${i}); nothing was changed`);
+    const next = base[i]! + add[i]! * scale;
+    const a = Math.abs(next);
+    if (!(a <= max || a <= Math.abs(base[i]!))) {
+      const what = Number.isFinite(next) ? `${next}, beyond ±${formatBound(max)} ${unit} (Body.limits)` : 'non-finite';
+      throw new RangeError(`${fn}: argument '${name}' would make ${label}'s ${field}[${i}] ${what}; nothing was changed`);
     }
+  }
+}
+
+/**
+ * Throws a RangeError unless the acceleration (base + add)·invMass stays within ±maxAcceleration in
+ * every component (or, for one already beyond it, does not grow): a force on a light body must
+ * not give a step a velocity or position that overflows.
+ */
+function checkAcceleration(fn: string, name: string, label: string, base: Float64Array, add: ArrayLike<number>, invMass: number): void {
+  const max = inputLimits.maxAcceleration;
+  for (let i = 0; i < base.length; i += 1) {
+    const next = Math.abs((base[i]! + add[i]!) * invMass);
+    if (!(next <= max || next <= Math.abs(base[i]! * invMass))) {
+      throw new RangeError(
+        `${fn}: argument '${name}' would give ${label} an acceleration[${i}] (force / mass) of ${formatBound(next)} m/s², beyond ±${formatBound(max)} m/s² (Body.limits); nothing was changed`,
+      );
+    }
+  }
+}
+
+/** Throws unless every principal inertia is within [minInertia, maxInertia] (a body with mass). */
+function checkInertia(fn: string, what: string, inertia: ArrayLike<number>, mass: number): void {
+  const { minInertia, maxInertia } = inputLimits;
+  for (let p = 0; p < inertia.length; p += 1) {
+    const I = inertia[p]!;
+    if (!(I >= minInertia && I <= maxInertia)) {
+      throw new RangeError(
+        `${fn}: ${what} gives principal inertia[${p}] = ${I} kg·m² for mass ${mass} kg, outside [${formatBound(minInertia)}, ${formatBound(maxInertia)}] (Body.limits); nothing was changed`,
+      );
+    }
+  }
+}
+
+/** Throws unless m is 0 (static) or within [minMass, maxMass]. */
+function checkMassValue(fn: string, what: string, m: number): void {
+  if (m < 0) throw new RangeError(`${fn}: ${what} must be >= 0 (0 = static), got ${m}`);
+  if (m !== 0 && !(m >= inputLimits.minMass && m <= inputLimits.maxMass)) {
+    throw new RangeError(
+      `${fn}: ${what} must be 0 (static) or within [${formatBound(inputLimits.minMass)}, ${formatBound(inputLimits.maxMass)}] kg (Body.limits), got ${m}`,
+    );
   }
 }
 
@@ -209,6 +267,14 @@ function wedgeSumFinite(D: Dims, out: Float64Array, base: Float64Array, a: Array
  * the array.
  */
 export class Body {
+  /**
+   * The bounds every call holds its numbers to (SI units, frozen): masses, inertias, sizes,
+   * positions, velocities, impulses, forces and torques beyond them are refused with a RangeError
+   * that names the argument and the bound, before anything changes (docs/engine.md, "Limits on
+   * input"). The shape factories and the joints hold theirs to the same bounds.
+   */
+  static readonly limits: InputLimits = inputLimits;
+
   /** A positive integer, unique in this process. */
   readonly id: number;
   /** The optional name given in the options (for messages). */
@@ -328,7 +394,7 @@ export class Body {
     } else {
       checkNumber('mass', options.mass, fn);
       mass = options.mass;
-      if (mass < 0) throw new RangeError(`${fn}: option 'mass' must be >= 0 (0 = static), got ${mass}`);
+      checkMassValue(fn, "option 'mass'", mass);
     }
     let type: BodyType;
     if (options.type === undefined) {
@@ -351,7 +417,11 @@ export class Body {
         `${fn}: option 'shape' is a half-space, which has no finite mass: give it mass 0 (static) or type 'kinematic' with mass 0`,
       );
     }
-    if (options.position !== undefined) checkVector(D, 'position', options.position, fn);
+    const lim = inputLimits;
+    if (options.position !== undefined) {
+      checkVector(D, 'position', options.position, fn);
+      checkComponents(fn, "option 'position'", options.position, lim.maxPosition, 'm');
+    }
     if (options.rotor !== undefined) {
       checkRotor(D, 'rotor', options.rotor, fn);
       const defect = D.kernels.defect(Float64Array.from(options.rotor));
@@ -361,8 +431,14 @@ export class Body {
         );
       }
     }
-    if (options.velocity !== undefined) checkVector(D, 'velocity', options.velocity, fn);
-    if (options.angularVelocity !== undefined) checkBivector(D, 'angularVelocity', options.angularVelocity, fn);
+    if (options.velocity !== undefined) {
+      checkVector(D, 'velocity', options.velocity, fn);
+      checkComponents(fn, "option 'velocity'", options.velocity, lim.maxVelocity, 'm/s');
+    }
+    if (options.angularVelocity !== undefined) {
+      checkBivector(D, 'angularVelocity', options.angularVelocity, fn);
+      checkComponents(fn, "option 'angularVelocity'", options.angularVelocity, lim.maxAngularVelocity, 'rad/s');
+    }
     if (type === 'static') {
       if ((options.velocity !== undefined && !isZero(options.velocity)) ||
           (options.angularVelocity !== undefined && !isZero(options.angularVelocity))) {
@@ -372,12 +448,16 @@ export class Body {
     const material = checkMaterial(options.material, fn);
     const frameOffset = shape.frameOffset;
     const frameRotor = shape.frameRotor;
-    if (frameOffset !== undefined) checkVector(D, 'shape.frameOffset', frameOffset, fn);
+    if (frameOffset !== undefined) {
+      checkVector(D, 'shape.frameOffset', frameOffset, fn);
+      checkComponents(fn, "option 'shape'.frameOffset", frameOffset, lim.maxPosition, 'm');
+    }
     if (frameRotor !== undefined) checkRotor(D, 'shape.frameRotor', frameRotor, fn);
     const inertia = new Float64Array(k);
     if (mass > 0) {
       const mp = shape.massProperties(D, mass);
       checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
+      checkInertia(fn, "option 'shape' with option 'mass'", mp.inertia, mass);
       inertia.set(mp.inertia);
     }
     // All checks passed: build.
@@ -647,6 +727,7 @@ export class Body {
    */
   setPositionN(p: ArrayLike<number>): this {
     checkVector(this.D, 'p', p, 'Body.setPositionN');
+    checkComponents('Body.setPositionN', "argument 'p'", p, inputLimits.maxPosition, 'm');
     this.xView.set(p);
     this.placeCentreOfMass();
     this.movedByHand();
@@ -677,6 +758,7 @@ export class Body {
   setLinearVelocity(v: ArrayLike<number>): this {
     const fn = 'Body.setLinearVelocity';
     checkVector(this.D, 'v', v, fn);
+    checkComponents(fn, "argument 'v'", v, inputLimits.maxVelocity, 'm/s');
     if (this.motion === MOTION_STATIC && !isZero(v)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot move (argument 'v' must be zero)`);
     }
@@ -692,6 +774,7 @@ export class Body {
   setAngularVelocity(w: ArrayLike<number>): this {
     const fn = 'Body.setAngularVelocity';
     checkBivector(this.D, 'w', w, fn);
+    checkComponents(fn, "argument 'w'", w, inputLimits.maxAngularVelocity, 'rad/s');
     if (this.motion === MOTION_STATIC && !isZero(w)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot turn (argument 'w' must be zero)`);
     }
@@ -706,10 +789,12 @@ export class Body {
    * kinematic bodies (infinite mass).
    */
   applyCentralImpulse(j: ArrayLike<number>): this {
-    checkVector(this.D, 'j', j, 'Body.applyCentralImpulse');
+    const fn = 'Body.applyCentralImpulse';
+    checkVector(this.D, 'j', j, fn);
+    checkComponents(fn, "argument 'j'", j, inputLimits.maxImpulse, 'N·s');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumFinite('Body.applyCentralImpulse', 'j', this.label, 'velocity', this.vView, j, im);
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
     this.wake();
     return this;
@@ -724,9 +809,11 @@ export class Body {
     const fn = 'Body.applyImpulse';
     checkVector(this.D, 'j', j, fn);
     checkVector(this.D, 'r', r, fn);
+    checkComponents(fn, "argument 'j'", j, inputLimits.maxImpulse, 'N·s');
+    checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumFinite(fn, 'j', this.label, 'velocity', this.vView, j, im);
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
     // the new L and its ω first, into scratch: committed only if both are finite
     const scratch = scratchFor(this.D);
     const L = scratch.bivector;
@@ -737,6 +824,15 @@ export class Body {
       for (let p = 0; p < this.D.k; p += 1) if (!Number.isFinite(w[p]!)) finite = false;
     }
     if (!finite) throw new RangeError(`${fn}: arguments 'j' and 'r' would make ${this.label}'s angular momentum non-finite; nothing was changed`);
+    const maxW = inputLimits.maxAngularVelocity;
+    for (let p = 0; p < this.D.k; p += 1) {
+      const a = Math.abs(w[p]!);
+      if (!(a <= maxW || a <= Math.abs(this.wView[p]!))) {
+        throw new RangeError(
+          `${fn}: arguments 'j' and 'r' would make ${this.label}'s angular velocity[${p}] ${w[p]}, beyond ±${formatBound(maxW)} rad/s (Body.limits); nothing was changed`,
+        );
+      }
+    }
     for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
     this.lView.set(L);
     this.wView.set(w);
@@ -746,9 +842,12 @@ export class Body {
 
   /** Adds a force f (N, n numbers) at the centre of mass, for the next step. Ignored by static and kinematic bodies. */
   applyCentralForce(f: ArrayLike<number>): this {
-    checkVector(this.D, 'f', f, 'Body.applyCentralForce');
+    const fn = 'Body.applyCentralForce';
+    checkVector(this.D, 'f', f, fn);
+    checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumFinite('Body.applyCentralForce', 'f', this.label, 'force', this.fView, f, 1);
+    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
     this.wake();
     return this;
@@ -762,12 +861,25 @@ export class Body {
     const fn = 'Body.applyForce';
     checkVector(this.D, 'f', f, fn);
     checkVector(this.D, 'r', r, fn);
+    checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
+    checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumFinite(fn, 'f', this.label, 'force', this.fView, f, 1);
+    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
     const torque = scratchFor(this.D).bivector;
     if (!wedgeSumFinite(this.D, torque, this.tView, r, f)) {
       throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
     }
+    const maxT = inputLimits.maxTorque;
+    for (let p = 0; p < this.D.k; p += 1) {
+      const a = Math.abs(torque[p]!);
+      if (!(a <= maxT || a <= Math.abs(this.tView[p]!))) {
+        throw new RangeError(
+          `${fn}: arguments 'f' and 'r' would make ${this.label}'s torque[${p}] ${torque[p]}, beyond ±${formatBound(maxT)} N·m (Body.limits); nothing was changed`,
+        );
+      }
+    }
+    this.checkAngularAcceleration(fn, "arguments 'f' and 'r'", torque);
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
     this.tView.set(torque);
     this.hasTorque = true;
@@ -777,10 +889,15 @@ export class Body {
 
   /** Adds a torque bivector t (N·m, k numbers, world frame) for the next step. Ignored by static and kinematic bodies. */
   applyTorque(t: ArrayLike<number>): this {
-    checkBivector(this.D, 't', t, 'Body.applyTorque');
+    const fn = 'Body.applyTorque';
+    checkBivector(this.D, 't', t, fn);
+    checkComponents(fn, "argument 't'", t, inputLimits.maxTorque, 'N·m');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumFinite('Body.applyTorque', 't', this.label, 'torque', this.tView, t, 1);
-    for (let p = 0; p < this.D.k; p += 1) this.tView[p] = this.tView[p]! + t[p]!;
+    checkSumBounded(fn, 't', this.label, 'torque', this.tView, t, 1, inputLimits.maxTorque, 'N·m');
+    const torque = scratchFor(this.D).bivector;
+    for (let p = 0; p < this.D.k; p += 1) torque[p] = this.tView[p]! + t[p]!;
+    this.checkAngularAcceleration(fn, "argument 't'", torque);
+    this.tView.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -857,7 +974,7 @@ export class Body {
   setMass(m: number): this {
     const fn = 'Body.setMass';
     checkNumber('m', m, fn);
-    if (m < 0) throw new RangeError(`${fn}: argument 'm' must be >= 0 (0 = static), got ${m}`);
+    checkMassValue(fn, "argument 'm'", m);
     if (m > 0 && this.shape.kind === 'halfspace') {
       throw new RangeError(`${fn}: ${this.label} is a half-space, which has no finite mass (argument 'm' must be 0)`);
     }
@@ -876,16 +993,47 @@ export class Body {
       return this;
     }
     const mp = this.shape.massProperties(this.D, m);
+    checkBivector(this.D, 'shape.massProperties(D, m).inertia', mp.inertia, fn);
+    checkInertia(fn, "argument 'm'", mp.inertia, m);
+    // L = I_world ω with the new inertia, into scratch: committed only if finite
+    const scratch = scratchFor(this.D);
+    const L = scratch.bivector;
+    momentumFromAngularVelocity(this.D, L, this.rView, mp.inertia, this.wView, scratch.tmp);
+    for (let p = 0; p < this.D.k; p += 1) {
+      if (!Number.isFinite(L[p]!)) {
+        throw new RangeError(`${fn}: argument 'm' would make ${this.label}'s angular momentum non-finite (L = I ω); nothing was changed`);
+      }
+    }
     if (this.motion === MOTION_STATIC) this.motion = MOTION_DYNAMIC;
     this.massValue = m;
     this.invMass = this.motion === MOTION_DYNAMIC ? 1 / m : 0;
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
-    this.momentumFromOmega();
+    this.lView.set(L);
     this.sleeping = false;
     this.sleepTimer = 0;
     this.owner?.onBodyChanged(this);
     return this;
+  }
+
+  /**
+   * Throws a RangeError unless the angular acceleration I_world⁻¹ τ of the torque `torque` (k
+   * numbers) stays within ±maxAngularAcceleration (or is no larger than the current torque's).
+   */
+  private checkAngularAcceleration(fn: string, what: string, torque: Float64Array): void {
+    const scratch = scratchFor(this.D);
+    const max = inputLimits.maxAngularAcceleration;
+    angularVelocityFromMomentum(this.D, scratch.omega, this.rView, this.invInertia, torque, scratch.tmp);
+    let next = 0;
+    for (let p = 0; p < this.D.k; p += 1) next = Math.max(next, Math.abs(scratch.omega[p]!));
+    if (next <= max) return;
+    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.tView, scratch.tmp);
+    let now = 0;
+    for (let p = 0; p < this.D.k; p += 1) now = Math.max(now, Math.abs(scratch.alpha[p]!));
+    if (next <= now) return;
+    throw new RangeError(
+      `${fn}: ${what} would give ${this.label} an angular acceleration (I⁻¹ τ) of ${formatBound(next)} rad/s², beyond ±${formatBound(max)} rad/s² (Body.limits); nothing was changed`,
+    );
   }
 
   /** @internal Clears the accumulated force and torque. */

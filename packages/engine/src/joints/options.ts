@@ -6,6 +6,30 @@
  */
 import { checkVector } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
+import { formatBound, inputLimits } from '../shapes/limits.js';
+
+/**
+ * The bound (and unit) of each joint number that feeds the state, by argument name (without
+ * 'opts.'): beyond it, the joint's impulses or soft-step coefficients could overflow. Break loads
+ * and angle limits are only compared, so any finite value (or ±Infinity for limits) is allowed.
+ */
+const JOINT_BOUNDS: Readonly<Record<string, readonly [number, string]>> = {
+  motorSpeed: [inputLimits.maxAngularVelocity, 'rad/s'],
+  speed: [inputLimits.maxAngularVelocity, 'rad/s'],
+  maxMotorTorque: [inputLimits.maxTorque, 'N·m'],
+  maxTorque: [inputLimits.maxTorque, 'N·m'],
+  rest: [inputLimits.maxPosition, 'm'],
+  hertz: [inputLimits.maxJointStiffness, 'Hz'],
+  damping: [inputLimits.maxJointStiffness, '(damping ratio)'],
+};
+
+/** Throws a RangeError when |v| is beyond the bound of `name` in JOINT_BOUNDS (if it has one). */
+function checkJointBound(fn: string, name: string, v: number): void {
+  const bound = JOINT_BOUNDS[name.startsWith('opts.') ? name.slice(5) : name];
+  if (bound !== undefined && !(Math.abs(v) <= bound[0])) {
+    throw new RangeError(`${fn}: argument '${name}' must be within ±${formatBound(bound[0])} ${bound[1]} (Body.limits), got ${v}`);
+  }
+}
 
 /** The options every joint takes. */
 export const COMMON_OPTION_NAMES: readonly string[] = ['hertz', 'damping', 'breakForce', 'breakTorque', 'collideConnected'];
@@ -27,6 +51,7 @@ export function checkJointOptionNames(fn: string, opts: unknown, extra: readonly
 export function readFinite(fn: string, name: string, x: unknown): number {
   if (typeof x !== 'number') throw new TypeError(`${fn}: argument '${name}' must be a number, got ${typeof x}`);
   if (!Number.isFinite(x)) throw new RangeError(`${fn}: argument '${name}' must be a finite number, got ${x}`);
+  checkJointBound(fn, name, x);
   return x;
 }
 
@@ -50,9 +75,15 @@ export function readBoolean(fn: string, name: string, x: unknown): boolean {
   return x;
 }
 
-/** @internal A vector of n finite numbers, copied into a new Float64Array. */
+/** @internal A vector of n finite numbers (a point: each within ±maxPosition), copied into a new Float64Array. */
 export function readVector(D: Dims, fn: string, name: string, v: unknown): Float64Array {
   checkVector(D, name, v, fn);
+  const max = inputLimits.maxPosition;
+  for (let i = 0; i < D.n; i += 1) {
+    if (!(Math.abs(v[i]!) <= max)) {
+      throw new RangeError(`${fn}: argument '${name}'[${i}] must be within ±${formatBound(max)} m (Body.limits), got ${v[i]}`);
+    }
+  }
   return Float64Array.from(v);
 }
 

@@ -1,6 +1,7 @@
 import type { Dims } from '@physin/algebra';
 import { checkDims, checkVector } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
+import { checkMagnitude, inputLimits } from './limits.js';
 import type { MassProperties, Shape } from './shape.js';
 import { boxColliders } from '../collision/box-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
@@ -22,9 +23,9 @@ export interface BoxShape extends Shape {
  * Mass properties: volume ∏ 2a_i; covariance C_ii = m a_i² / 3 (uniform density).
  *
  * @param D - the tables of the dimension; its n must equal `halfExtents.length`.
- * @param halfExtents - n half edge lengths (m), finite and > 0 (copied).
+ * @param halfExtents - n half edge lengths (m), each within [1e-9, 1e9] (`Body.limits`; copied).
  * @throws TypeError when `D` is not a Dims or `halfExtents` has the wrong length;
- *   RangeError for a non-finite, zero or negative half extent.
+ *   RangeError for a non-finite, zero or negative half extent, or one beyond the length bounds.
  */
 export function HyperBox(D: Dims, halfExtents: ArrayLike<number>): BoxShape {
   const where = 'HyperBox';
@@ -35,6 +36,7 @@ export function HyperBox(D: Dims, halfExtents: ArrayLike<number>): BoxShape {
   const unitCovariance = new Float64Array(n);
   for (let i = 0; i < n; i += 1) {
     if (!(a[i] > 0)) throw new RangeError(`${where}: argument 'halfExtents'[${i}] must be > 0, got ${a[i]}`);
+    checkMagnitude(where, `argument 'halfExtents'[${i}]`, a[i], inputLimits.minLength, inputLimits.maxLength, 'm');
     volume *= 2 * a[i];
     unitCovariance[i] = (a[i] * a[i]) / 3;
   }

@@ -2,6 +2,7 @@ import { matrixToRotor } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import { checkDims, checkPoints, checkPositive, checkTuples } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
+import { formatBound, inputLimits } from './limits.js';
 import { createMoments, centreMoments, facetNormal, factorial } from './mesh-geometry.js';
 import { accumulateMeshMoments } from './mesh-mass.js';
 import { checkClosedBoundary } from './mesh-topology.js';
@@ -195,6 +196,16 @@ function buildConvexMesh(
     throw new RangeError(`${where}: a closed mesh in ${n}D needs at least ${n + 1} facets, got ${facetCount}`);
   }
 
+  // coordinates within ±maxPosition, so the sums, squares and the centroid below stay finite
+  const maxPosition = inputLimits.maxPosition;
+  for (let i = 0; i < input.length; i += 1) {
+    if (!(Math.abs(input[i]) <= maxPosition)) {
+      const v = Math.floor(i / n);
+      throw new RangeError(
+        `${where}: ${label.vertex(v)} coordinate ${i % n} must be within ±${formatBound(maxPosition)} m (Body.limits), got ${input[i]}`,
+      );
+    }
+  }
   // the vertex mean is inside a convex polytope: it anchors the cones and measures the size
   const mean = new Float64Array(n);
   for (let i = 0; i < count; i += 1) for (let c = 0; c < n; c += 1) mean[c] += input[i * n + c];
@@ -209,6 +220,11 @@ function buildConvexMesh(
       d2 += x[i * n + c] ** 2;
     }
     size = Math.max(size, Math.sqrt(d2));
+  }
+  if (!(size >= inputLimits.minLength && size <= inputLimits.maxLength)) {
+    throw new RangeError(
+      `${where}: the mesh's size (largest distance of a vertex from the vertex mean) must be within [${formatBound(inputLimits.minLength)}, ${formatBound(inputLimits.maxLength)}] m (Body.limits), got ${size}`,
+    );
   }
   const tolerance = relativeTolerance * size;
 
@@ -307,6 +323,13 @@ function buildConvexMesh(
   const Q = new Float64Array(n * n);
   const unitCovariance = new Float64Array(n);
   principalFrame(n, Q, unitCovariance, K);
+  for (let c = 0; c < n; c += 1) {
+    if (!(unitCovariance[c] > 0 && unitCovariance[c] < Infinity) || !(volume > 0 && volume < Infinity)) {
+      throw new RangeError(
+        `${where}: the mesh has volume ${volume} and principal second moment ${unitCovariance[c]} m² along axis ${c}: too thin to have an inertia`,
+      );
+    }
+  }
   const frameRotor = matrixToRotor(D, new Float64Array(D.r), Q);
 
   // principal frame: local = Qᵀ (x − g), normals N' = Qᵀ N

@@ -1,6 +1,7 @@
 import type { Dims } from '@physin/algebra';
 import { checkDims, checkFinite, checkVector } from './checks.js';
 import type { MassProperties, Shape } from './shape.js';
+import { checkMagnitude, inputLimits } from './limits.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
 
 /**
@@ -26,7 +27,7 @@ export interface HalfSpaceShape extends Shape {
  *
  * @param D - the tables of the dimension; its n must equal `normal.length`.
  * @param normal - n numbers, finite, not all zero; points out of the solid.
- * @param offset - finite (m).
+ * @param offset - finite (m); offset / |normal| within ±1e12 (`Body.limits.maxPosition`).
  * @throws TypeError for a wrong type or length; RangeError for non-finite numbers or a zero normal.
  */
 export function HalfSpace(D: Dims, normal: ArrayLike<number>, offset: number): HalfSpaceShape {
@@ -40,11 +41,13 @@ export function HalfSpace(D: Dims, normal: ArrayLike<number>, offset: number): H
     throw new RangeError(`${where}: argument 'normal' must be a non-zero vector, got length ${length}`);
   }
   for (let i = 0; i < n; i += 1) unit[i] /= length;
+  const stored = d / length;
+  checkMagnitude(where, "argument 'offset' / |normal|", stored, 0, inputLimits.maxPosition, 'm');
   return Object.freeze({
     kind: 'halfspace' as const,
     n,
     normal: unit,
-    offset: d / length,
+    offset: stored,
     massProperties(_D: Dims, _mass: number): MassProperties {
       throw new RangeError('HalfSpace.massProperties: a half-space has no mass; it is static only (give its body mass 0)');
     },

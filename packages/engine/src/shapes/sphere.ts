@@ -2,6 +2,7 @@ import type { Dims } from '@physin/algebra';
 import { ballVolume } from './ball-volume.js';
 import { checkDims, checkPositive } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
+import { checkMagnitude, inputLimits } from './limits.js';
 import type { MassProperties, Shape } from './shape.js';
 import { sphereColliders } from '../collision/sphere-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
@@ -22,13 +23,14 @@ export interface SphereShape extends Shape {
  * covariance C_ii = m ρ² / (n + 2) on every axis.
  *
  * @param D - the dimensions (from `dims(n)`).
- * @param radius - radius (m), finite and > 0.
+ * @param radius - radius (m), within [1e-9, 1e9] (`Body.limits`).
  * @throws TypeError when `D` is not a Dims or `radius` is not a number; RangeError when the
  *   radius is not finite or not > 0.
  */
 export function HyperSphere(D: Dims, radius: number): SphereShape {
   const dimensions = checkDims('HyperSphere', D).n;
   const rho = checkPositive('HyperSphere', radius, 'radius');
+  checkMagnitude('HyperSphere', "argument 'radius'", rho, inputLimits.minLength, inputLimits.maxLength, 'm');
   return Object.freeze({
     // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
     colliders: sphereColliders,

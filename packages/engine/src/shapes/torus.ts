@@ -2,6 +2,7 @@ import type { Dims } from '@physin/algebra';
 import { ballVolume } from './ball-volume.js';
 import { checkDims, checkIndex, checkPositive, isNumberList } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
+import { checkMagnitude, inputLimits } from './limits.js';
 import type { MassProperties, Shape } from './shape.js';
 import { torusColliders } from '../collision/torus-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
@@ -36,8 +37,8 @@ export interface TorusShape extends Shape {
  * about the symmetry axis and m(4R² + 5r²)/8 about a diameter.
  *
  * @param D - the tables of the dimension.
- * @param majorRadius - R (m), finite, > minorRadius.
- * @param minorRadius - r (m), finite, > 0.
+ * @param majorRadius - R (m), > minorRadius, within [1e-9, 1e9] (`Body.limits`).
+ * @param minorRadius - r (m), within [1e-9, 1e9].
  * @param plane - the plane of the core circle: either its index in lexicographic order
  *   (0 ..< k; n = 3: 0 = xy, 1 = xz, 2 = yz) or a pair of distinct axes [i, j] (either order).
  * @throws TypeError for a wrong type; RangeError for radii out of range (including r >= R) or a
@@ -54,6 +55,8 @@ export function HyperTorus(
   const { n, k } = checked;
   const R = checkPositive(where, majorRadius, 'majorRadius');
   const r = checkPositive(where, minorRadius, 'minorRadius');
+  checkMagnitude(where, "argument 'majorRadius'", R, inputLimits.minLength, inputLimits.maxLength, 'm');
+  checkMagnitude(where, "argument 'minorRadius'", r, inputLimits.minLength, inputLimits.maxLength, 'm');
   if (!(r < R)) {
     throw new RangeError(`${where}: argument 'minorRadius' must be < 'majorRadius' (a ring torus), got r = ${r} >= R = ${R}`);
   }

@@ -216,7 +216,11 @@ describe('non-finite state: caught, named, undone', () => {
   it('a position that overflows: NonFiniteStateError names the body and field; every body is back to its state before the step', () => {
     const { world, bad } = failing(4);
     world.step(1 / 60);
-    bad.setPositionN([1.79e308, 0, 0, 0]).setLinearVelocity([1e308, 0, 0, 0]);
+    // Values no call accepts (Body.limits): written into the fields directly, as a bug would
+    // (setPositionN first, so the world reads the moved pose).
+    bad.setPositionN([1e12, 0, 0, 0]);
+    bad.x[0] = 1.79e308;
+    bad.v[0] = 1e308;
     const before = snapshot(world);
     let err: unknown = null;
     try {
@@ -240,11 +244,12 @@ describe('non-finite state: caught, named, undone', () => {
   it('a torque whose impulse overflows L is reported as L; in sub-step 2 of 3 the earlier sub-steps are undone too', () => {
     const { world, bad } = failing(3);
     world.setParams({ subSteps: 3 });
-    // A second torque of 1.7e308 is refused at the call (the sum would overflow: see
-    // engine-body-finite); one is finite, but over a sub-step of 20 s its impulse overflows L in
+    // A torque of 1.7e308 is refused at the call (Body.limits: engine-input-limits); written into
+    // the field directly, it is finite, but over a sub-step of 20 s its impulse overflows L in
     // sub-step 1.
-    bad.applyTorque([1.7e308, 0, 0]);
     expect(() => bad.applyTorque([1.7e308, 0, 0])).toThrow(RangeError);
+    bad.torque[0] = 1.7e308;
+    bad.hasTorque = true;
     const before = snapshot(world);
     expect(() => world.step(60)).toThrow(NonFiniteStateError);
     expect(snapshot(world)).toBe(before);
@@ -260,7 +265,9 @@ describe('non-finite state: caught, named, undone', () => {
     const { world: w2, bad: b2 } = failing(3);
     w2.setParams({ subSteps: 3 });
     // h = 0.5: x = 0.5e308 → 1.3e308 (sub-step 1) → overflow (sub-step 2).
-    b2.setPositionN([0.5e308, 0, 0]).setLinearVelocity([1.6e308, 0, 0]);
+    b2.setPositionN([1e12, 0, 0]);
+    b2.x[0] = 0.5e308;
+    b2.v[0] = 1.6e308;
     const before2 = snapshot(w2);
     try {
       w2.step(1.5);

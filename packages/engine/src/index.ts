@@ -20,6 +20,7 @@ export type { ContactEvents } from './contacts/contact-events.js';
 export type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
 export { Body } from './body.js';
 export type { BodyOptions, BodyType, Material } from './body.js';
+export type { InputLimits } from './shapes/limits.js';
 export { defaultParams, validateParams } from './params.js';
 export type { Params } from './params.js';
 export { NonFiniteStateError } from './errors.js';

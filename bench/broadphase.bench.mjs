@@ -11,10 +11,12 @@
 const engine = await import('@physin/engine').catch(() => ({}));
 const createBroadphase =
   engine.createBroadphase ??
-  (await import('../packages/engine/dist/collision/broadphase.js').catch(() => {
-    console.error('broadphase.bench: build the engine first (npm run build)');
-    process.exit(1);
-  })).createBroadphase;
+  (
+    await import('../packages/engine/dist/collision/broadphase.js').catch(() => {
+      console.error('broadphase.bench: build the engine first (npm run build)');
+      process.exit(1);
+    })
+  ).createBroadphase;
 
 const WARMUP_STEPS = 200;
 const TIMED_STEPS = 600;

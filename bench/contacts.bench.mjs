@@ -42,7 +42,9 @@ try {
   RAPIER = await loadRapier();
   CANNON = await loadCannon();
 } catch (error) {
-  console.error(`contacts.bench: a peer failed to load (install: \`node scripts/pnpm.mjs install\` at the root): ${error?.stack ?? error}`);
+  console.error(
+    `contacts.bench: a peer failed to load (install: \`node scripts/pnpm.mjs install\` at the root): ${error?.stack ?? error}`,
+  );
   process.exit(1);
 }
 let physin;
@@ -92,7 +94,16 @@ function runRounds(lanes, rounds) {
 function failed(label, error, steps = 0) {
   failures += 1;
   console.error(`contacts.bench: ${label} threw after ${steps} steps: ${error?.stack ?? error}`);
-  return { median: NaN, p10: NaN, p90: NaN, steps, capped: true, stands: false, measure: `error: ${error?.message ?? error}`, error: true };
+  return {
+    median: NaN,
+    p10: NaN,
+    p90: NaN,
+    steps,
+    capped: true,
+    stands: false,
+    measure: `error: ${error?.message ?? error}`,
+    error: true,
+  };
 }
 
 /** The cells of a table row that describe one run's result. */
@@ -110,7 +121,11 @@ const standsCell = (r) => (r.error ? 'error' : r.capped ? 'capped' : r.stands ==
 
 // ---- 3D: PhysiN and the peers --------------------------------------------------------------
 const engines = [
-  { name: 'PhysiN', build: (layout) => buildPhysinScene(layout), budget: (layout) => (layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small) },
+  {
+    name: 'PhysiN',
+    build: (layout) => buildPhysinScene(layout),
+    budget: (layout) => (layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small),
+  },
   { name: 'Rapier', build: (layout) => buildRapierScene(RAPIER, layout), budget: () => Infinity },
   { name: 'cannon-es', build: (layout) => buildCannonScene(CANNON, layout), budget: () => Infinity },
 ];
@@ -130,12 +145,23 @@ for (const layout of peerLayouts()) {
     results[layout.name][`PhysiN vs ${peer.name}`] = mine;
     if (p === 0) results[layout.name].PhysiN = mine;
     results[layout.name][peer.name] = theirs;
-    for (const [label, r] of [[p === 0 ? 'PhysiN' : `PhysiN (${p + 1})`, mine], [peer.name, theirs]]) {
-      rows.push({ scene: layout.name, engine: label, 'in turns with': label === peer.name ? 'PhysiN' : peer.name, ...resultCells(layout, r) });
+    for (const [label, r] of [
+      [p === 0 ? 'PhysiN' : `PhysiN (${p + 1})`, mine],
+      [peer.name, theirs],
+    ]) {
+      rows.push({
+        scene: layout.name,
+        engine: label,
+        'in turns with': label === peer.name ? 'PhysiN' : peer.name,
+        ...resultCells(layout, r),
+      });
     }
   });
 }
-medianTable(`3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs)`, rows);
+medianTable(
+  `3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs)`,
+  rows,
+);
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
@@ -159,7 +185,8 @@ medianTable(
 // ---- PhysiN alone in n dimensions ------------------------------------------------------------
 // Each group runs in turns (bench/lib/turns.mjs), so a ratio inside a group compares the same minutes:
 // stack9 4D beside a fresh stack9 3D, and the five stacks of 5 together.
-const physinLane = (layout) => lane(layout, (l) => buildPhysinScene(l), layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small);
+const physinLane = (layout) =>
+  lane(layout, (l) => buildPhysinScene(l), layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small);
 const nGroups = [
   { layouts: [stackLayout(9, 4, 'stack9 4D'), stackLayout(9, 3, 'stack9 3D')], rounds: 3 },
   { layouts: [pileLayout(300, 4, 4, 1004, 'pile300 4D')], rounds: 1 },
@@ -178,9 +205,16 @@ for (const group of nGroups) {
 // Cost growth of the 5-box stack with n, relative to n = 3.
 const base5 = nResults['stack5 3D'].median;
 for (const row of nRows) {
-  row['vs 3D'] = row.scene.startsWith('stack5') ? ratio(row['ms/step (median)'], base5) : row.scene === 'stack9 4D' ? ratio(row['ms/step (median)'], nResults['stack9 3D'].median) : '—';
+  row['vs 3D'] = row.scene.startsWith('stack5')
+    ? ratio(row['ms/step (median)'], base5)
+    : row.scene === 'stack9 4D'
+      ? ratio(row['ms/step (median)'], nResults['stack9 3D'].median)
+      : '—';
 }
-medianTable(`PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of a run ("vs 3D": the same scene in 3D, run in the same turns)`, nRows);
+medianTable(
+  `PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of a run ("vs 3D": the same scene in 3D, run in the same turns)`,
+  nRows,
+);
 
 // ---- Targets ----------------------------------------------------------------------------------
 const P = (scene) => results[scene].PhysiN;
@@ -193,7 +227,12 @@ const within = (label, a, b, limit) => {
 };
 const standing = (scene) => {
   const r = P(scene);
-  targets.push({ target: `${scene} stands (PhysiN, 10 s)`, measured: r.measure, limit: 'stands', met: yesNo(r.stands === true && !r.capped) });
+  targets.push({
+    target: `${scene} stands (PhysiN, 10 s)`,
+    measured: r.measure,
+    limit: 'stands',
+    met: yesNo(r.stands === true && !r.capped),
+  });
 };
 within('stack9: PhysiN / Rapier ms/step', results.stack9['PhysiN vs Rapier'].median, results.stack9.Rapier.median, 2);
 standing('stack9');
@@ -209,9 +248,15 @@ medianTable('Targets (medians of ms/step; reported, not asserted)', targets);
 
 const physinRuns = [...Object.values(results).map((r) => r.PhysiN), ...Object.values(nResults)];
 const sunk = physinRuns.filter((r) => r.below > 0).length;
-if (sunk > 0) console.log(`\nPhysiN: ${sunk} of ${physinRuns.length} runs ended with boxes below the ground (no contacts in World.step?): read their times as integration only.`);
+if (sunk > 0)
+  console.log(
+    `\nPhysiN: ${sunk} of ${physinRuns.length} runs ended with boxes below the ground (no contacts in World.step?): read their times as integration only.`,
+  );
 const capped = [...Object.values(results).map((r) => r.PhysiN), ...Object.values(nResults)].some((r) => r.capped && !r.error);
-if (capped) console.log(`\nSome PhysiN runs were cut short by their time budget (${PHYSIN_BUDGET_MS.small / 1000} s, piles ${PHYSIN_BUDGET_MS.pile / 1000} s): their medians cover the steps they ran.`);
+if (capped)
+  console.log(
+    `\nSome PhysiN runs were cut short by their time budget (${PHYSIN_BUDGET_MS.small / 1000} s, piles ${PHYSIN_BUDGET_MS.pile / 1000} s): their medians cover the steps they ran.`,
+  );
 if (failures > 0) {
   console.error(`\ncontacts.bench: ${failures} scene(s) threw (see above)`);
   process.exit(1);

@@ -44,14 +44,18 @@ try {
   RAPIER = await loadRapier();
   CANNON = await loadCannon();
 } catch (error) {
-  console.error(`joints.bench: a peer failed to load (install: \`node scripts/pnpm.mjs install\` at the root): ${error?.stack ?? error}`);
+  console.error(
+    `joints.bench: a peer failed to load (install: \`node scripts/pnpm.mjs install\` at the root): ${error?.stack ?? error}`,
+  );
   process.exit(1);
 }
 let S;
 try {
   S = await import('./scenes/joint-scenes.mjs');
 } catch (error) {
-  console.error(`joints.bench: cannot load the built engine with joints (build it first: npm run build): ${error?.stack ?? error}`);
+  console.error(
+    `joints.bench: cannot load the built engine with joints (build it first: npm run build): ${error?.stack ?? error}`,
+  );
   process.exit(1);
 }
 
@@ -104,8 +108,20 @@ function runTogether(entries) {
   return runRoundsInTurns(lanes, roundsOf(entries), { steps: STEPS }).map((x, i) => {
     if (x.error === undefined) return x;
     failures += 1;
-    console.error(`joints.bench: ${entries[i].scene} ${entries[i].engine} threw after ${x.steps} steps: ${x.error?.stack ?? x.error}`);
-    return { median: NaN, p10: NaN, p90: NaN, steps: x.steps, worst: NaN, last: NaN, capped: true, error: true, rounds: x.rounds };
+    console.error(
+      `joints.bench: ${entries[i].scene} ${entries[i].engine} threw after ${x.steps} steps: ${x.error?.stack ?? x.error}`,
+    );
+    return {
+      median: NaN,
+      p10: NaN,
+      p90: NaN,
+      steps: x.steps,
+      worst: NaN,
+      last: NaN,
+      capped: true,
+      error: true,
+      rounds: x.rounds,
+    };
   });
 }
 
@@ -114,22 +130,99 @@ const warmRapier = () => S.rapierChain(RAPIER);
 const warmCannon = () => S.cannonChain(CANNON);
 
 const runs = [
-  { scene: 'chain10 whip', engine: 'PhysiN', bodies: 10, joints: 10, build: () => S.physinChain({ start: 'horizontal' }), warm: warmPhysin },
-  { scene: 'chain10 whip', engine: 'PhysiN subSteps 4', bodies: 10, joints: 10, build: () => S.physinChain({ start: 'horizontal', params: { subSteps: 4 } }), warm: warmPhysin },
-  { scene: 'chain10 whip', engine: 'Rapier', bodies: 10, joints: 10, build: () => S.rapierChain(RAPIER, { start: 'horizontal' }), warm: warmRapier },
-  { scene: 'chain10 whip', engine: 'cannon-es', bodies: 10, joints: 10, build: () => S.cannonChain(CANNON, { start: 'horizontal' }), warm: warmCannon },
-  { scene: 'chain10 hang', engine: 'PhysiN', bodies: 10, joints: 10, build: () => S.physinChain({ start: 'hanging' }), warm: warmPhysin },
-  { scene: 'chain10 hang', engine: 'PhysiN subSteps 4', bodies: 10, joints: 10, build: () => S.physinChain({ start: 'hanging', params: { subSteps: 4 } }), warm: warmPhysin },
-  { scene: 'chain10 hang', engine: 'Rapier', bodies: 10, joints: 10, build: () => S.rapierChain(RAPIER, { start: 'hanging' }), warm: warmRapier },
-  { scene: 'chain10 hang', engine: 'cannon-es', bodies: 10, joints: 10, build: () => S.cannonChain(CANNON, { start: 'hanging' }), warm: warmCannon },
+  {
+    scene: 'chain10 whip',
+    engine: 'PhysiN',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'horizontal' }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 whip',
+    engine: 'PhysiN subSteps 4',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'horizontal', params: { subSteps: 4 } }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 whip',
+    engine: 'Rapier',
+    bodies: 10,
+    joints: 10,
+    build: () => S.rapierChain(RAPIER, { start: 'horizontal' }),
+    warm: warmRapier,
+  },
+  {
+    scene: 'chain10 whip',
+    engine: 'cannon-es',
+    bodies: 10,
+    joints: 10,
+    build: () => S.cannonChain(CANNON, { start: 'horizontal' }),
+    warm: warmCannon,
+  },
+  {
+    scene: 'chain10 hang',
+    engine: 'PhysiN',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'hanging' }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 hang',
+    engine: 'PhysiN subSteps 4',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'hanging', params: { subSteps: 4 } }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 hang',
+    engine: 'Rapier',
+    bodies: 10,
+    joints: 10,
+    build: () => S.rapierChain(RAPIER, { start: 'hanging' }),
+    warm: warmRapier,
+  },
+  {
+    scene: 'chain10 hang',
+    engine: 'cannon-es',
+    bodies: 10,
+    joints: 10,
+    build: () => S.cannonChain(CANNON, { start: 'hanging' }),
+    warm: warmCannon,
+  },
   { scene: 'grid20', engine: 'PhysiN', bodies: 400, joints: 780, build: () => S.physinGrid(), warm: warmPhysin },
   { scene: 'grid20', engine: 'Rapier', bodies: 400, joints: 780, build: () => S.rapierGrid(RAPIER), warm: warmRapier },
   { scene: 'grid20', engine: 'cannon-es', bodies: 400, joints: 780, build: () => S.cannonGrid(CANNON), warm: warmCannon },
 ];
 const fourD = [
-  { scene: 'chain10 4D whip', engine: 'PhysiN', bodies: 10, joints: 10, build: () => S.physinChain({ n: 4, start: 'horizontal' }), warm: () => S.physinChain({ n: 4 }) },
-  { scene: 'chain10 4D whip', engine: 'PhysiN subSteps 4', bodies: 10, joints: 10, build: () => S.physinChain({ n: 4, start: 'horizontal', params: { subSteps: 4 } }), warm: () => S.physinChain({ n: 4 }) },
-  { scene: 'chain10 4D hang', engine: 'PhysiN', bodies: 10, joints: 10, build: () => S.physinChain({ n: 4, start: 'hanging' }), warm: () => S.physinChain({ n: 4 }) },
+  {
+    scene: 'chain10 4D whip',
+    engine: 'PhysiN',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ n: 4, start: 'horizontal' }),
+    warm: () => S.physinChain({ n: 4 }),
+  },
+  {
+    scene: 'chain10 4D whip',
+    engine: 'PhysiN subSteps 4',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ n: 4, start: 'horizontal', params: { subSteps: 4 } }),
+    warm: () => S.physinChain({ n: 4 }),
+  },
+  {
+    scene: 'chain10 4D hang',
+    engine: 'PhysiN',
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ n: 4, start: 'hanging' }),
+    warm: () => S.physinChain({ n: 4 }),
+  },
 ];
 
 const results = {};
@@ -166,7 +259,10 @@ for (const scene of ['chain10 whip', 'chain10 hang', 'grid20']) {
     rows3.push({ ...row({ ...withCannon[i], engine: key }, x), 'in turns with': i === 0 ? 'cannon-es' : 'PhysiN' });
   });
 }
-medianTable(`3D joint scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; PhysiN and one peer in turns); worst joint error over 10 s`, rows3);
+medianTable(
+  `3D joint scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; PhysiN and one peer in turns); worst joint error over 10 s`,
+  rows3,
+);
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
@@ -198,22 +294,53 @@ pairs4.forEach(([r], i) => {
   out['time vs 3D'] = ratio(x.median, same3.median);
   rows4.push(out);
 });
-medianTable(`PhysiN in 4D: ms/step, median over the ${STEPS} steps of one run; worst joint error over 10 s ("time vs 3D": the same scene and settings in 3D, run in the same turns)`, rows4);
+medianTable(
+  `PhysiN in 4D: ms/step, median over the ${STEPS} steps of one run; worst joint error over 10 s ("time vs 3D": the same scene and settings in 3D, run in the same turns)`,
+  rows4,
+);
 
 // ---- Targets ----------------------------------------------------------------------------------
 const yesNo = (ok) => (ok ? 'yes' : 'NO');
 const whip = results['chain10 whip|PhysiN'].worst;
 const fmt = (x) => (Number.isFinite(x) ? x.toPrecision(3) : String(x));
 const targets = [
-  { target: 'chain10 whip, worst error (PhysiN defaults) below Rapier 0.21 (the issue\'s figure)', measured: fmt(whip), limit: '< 0.23', met: yesNo(whip < 0.23) },
-  { target: 'chain10 whip, worst error below cannon-es 0.20 (the issue\'s figure)', measured: fmt(whip), limit: '< 0.40', met: yesNo(whip < 0.4) },
-  { target: "chain10 whip, worst error below the specification's claim", measured: fmt(whip), limit: '< 0.114', met: yesNo(whip < 0.114) },
-  { target: 'chain10 whip, worst error below Rapier in this run', measured: fmt(whip), limit: `< ${fmt(results['chain10 whip|Rapier'].worst)}`, met: yesNo(whip < results['chain10 whip|Rapier'].worst) },
-  { target: 'chain10 whip, worst error below cannon-es in this run', measured: fmt(whip), limit: `< ${fmt(results['chain10 whip|cannon-es'].worst)}`, met: yesNo(whip < results['chain10 whip|cannon-es'].worst) },
+  {
+    target: "chain10 whip, worst error (PhysiN defaults) below Rapier 0.21 (the issue's figure)",
+    measured: fmt(whip),
+    limit: '< 0.23',
+    met: yesNo(whip < 0.23),
+  },
+  {
+    target: "chain10 whip, worst error below cannon-es 0.20 (the issue's figure)",
+    measured: fmt(whip),
+    limit: '< 0.40',
+    met: yesNo(whip < 0.4),
+  },
+  {
+    target: "chain10 whip, worst error below the specification's claim",
+    measured: fmt(whip),
+    limit: '< 0.114',
+    met: yesNo(whip < 0.114),
+  },
+  {
+    target: 'chain10 whip, worst error below Rapier in this run',
+    measured: fmt(whip),
+    limit: `< ${fmt(results['chain10 whip|Rapier'].worst)}`,
+    met: yesNo(whip < results['chain10 whip|Rapier'].worst),
+  },
+  {
+    target: 'chain10 whip, worst error below cannon-es in this run',
+    measured: fmt(whip),
+    limit: `< ${fmt(results['chain10 whip|cannon-es'].worst)}`,
+    met: yesNo(whip < results['chain10 whip|cannon-es'].worst),
+  },
 ];
 medianTable('Targets (worst joint error of the whipping chain; reported, not asserted)', targets);
 
-if (Object.values(results).some((r) => r.capped && !r.error)) console.log(`\nSome runs were cut short by the ${BUDGET_MS / 1000} s budget: their medians and errors cover the steps they ran.`);
+if (Object.values(results).some((r) => r.capped && !r.error))
+  console.log(
+    `\nSome runs were cut short by the ${BUDGET_MS / 1000} s budget: their medians and errors cover the steps they ran.`,
+  );
 if (failures > 0) {
   console.error(`\njoints.bench: ${failures} run(s) threw (see above)`);
   process.exit(1);

@@ -118,7 +118,10 @@ for (const row of rows) {
     if (!(key in row)) row[key] = '–';
   }
 }
-medianTable('Box–box SAT, ns/call (median of 25 batches); n = 3 uses the closed form, the "3D general" columns the general-n path on the same inputs', rows);
+medianTable(
+  'Box–box SAT, ns/call (median of 25 batches); n = 3 uses the closed form, the "3D general" columns the general-n path on the same inputs',
+  rows,
+);
 medianTable('Box–box manifold (SAT + clip + reduce), ns/call (median of 25 batches)', manifoldRows);
 
 // 3D closed form vs general on the resting and random inputs, directly
@@ -156,5 +159,8 @@ medianTable('Box–box manifold (SAT + clip + reduce), ns/call (median of 25 bat
       'box–half-space ns': timeOp(collideBoxHalfSpace, [outs, ns, B, PB, floors, PA, margins, scratches]).median,
     });
   }
-  medianTable('Other pairs, ns/call (median of 25 batches): box–sphere (ball overlapping a face), box–half-space (box resting flat)', other);
+  medianTable(
+    'Other pairs, ns/call (median of 25 batches): box–sphere (ball overlapping a face), box–half-space (box resting flat)',
+    other,
+  );
 }

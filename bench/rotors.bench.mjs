@@ -70,14 +70,26 @@ const qa = new Float64Array(4);
 const qb = new Float64Array(4);
 const qo = new Float64Array(4);
 function glMulOnOurLayout(out, a, b) {
-  qa[0] = -a[3]; qa[1] = a[2]; qa[2] = -a[1]; qa[3] = a[0];
-  qb[0] = -b[3]; qb[1] = b[2]; qb[2] = -b[1]; qb[3] = b[0];
+  qa[0] = -a[3];
+  qa[1] = a[2];
+  qa[2] = -a[1];
+  qa[3] = a[0];
+  qb[0] = -b[3];
+  qb[1] = b[2];
+  qb[2] = -b[1];
+  qb[3] = b[0];
   quat.multiply(qo, qa, qb);
-  out[0] = qo[3]; out[1] = -qo[2]; out[2] = qo[1]; out[3] = -qo[0];
+  out[0] = qo[3];
+  out[1] = -qo[2];
+  out[2] = qo[1];
+  out[3] = -qo[0];
   return out;
 }
 function glApplyOnOurLayout(out, R, v) {
-  qa[0] = -R[3]; qa[1] = R[2]; qa[2] = -R[1]; qa[3] = R[0];
+  qa[0] = -R[3];
+  qa[1] = R[2];
+  qa[2] = -R[1];
+  qa[3] = R[0];
   return vec3.transformQuat(out, v, qa);
 }
 const glMul = timeOp(quat.multiply, [glOut, glA, glB]).median;
@@ -129,13 +141,19 @@ medianTable('Other rotor kernels, generic vs fast, ns/op (median)', otherRows);
   const M = new Float64Array(16);
   function applyViaMatrix(out, R, v) {
     K.toMatrix(M, R);
-    const v0 = v[0], v1 = v[1], v2 = v[2], v3 = v[3];
+    const v0 = v[0],
+      v1 = v[1],
+      v2 = v[2],
+      v3 = v[3];
     for (let i = 0; i < 4; i += 1) out[i] = M[i * 4] * v0 + M[i * 4 + 1] * v1 + M[i * 4 + 2] * v2 + M[i * 4 + 3] * v3;
     return out;
   }
   const matrices = I.rotors.map((R) => K.toMatrix(new Float64Array(16), R));
   function matVec(out, Mx, v) {
-    const v0 = v[0], v1 = v[1], v2 = v[2], v3 = v[3];
+    const v0 = v[0],
+      v1 = v[1],
+      v2 = v[2],
+      v3 = v[3];
     for (let i = 0; i < 4; i += 1) out[i] = Mx[i * 4] * v0 + Mx[i * 4 + 1] * v1 + Mx[i * 4 + 2] * v2 + Mx[i * 4 + 3] * v3;
     return out;
   }
@@ -172,21 +190,18 @@ const targets = [
   ['3D apply fast ≥ 3× generic', measured[3].gApp / measured[3].sApp, 3, 'min'],
   ['4D apply fast ≥ 3× generic', measured[4].gApp / measured[4].sApp, 3, 'min'],
 ];
-medianTable(
-  'Targets (ratios of medians)',
-  [
-    ...targets.map(([target, ratio, bound, kind]) => ({
-      target,
-      'measured ratio': ratio,
-      met: (kind === 'max' ? ratio <= bound : ratio >= bound) ? 'yes' : 'NO',
-    })),
-    // Not a target: the same 4D/3D ratio on the arithmetic alone (each median minus the timing
-    // floor above), since the floor is most of a 3D product's time. Noisy: the floor is small
-    // differences of small numbers.
-    {
-      target: '(info) 4D / 3D product, timing floor subtracted',
-      'measured ratio': (measured[4].sMul - floor) / Math.max(measured[3].sMul - floor, 1e-9),
-      met: '-',
-    },
-  ],
-);
+medianTable('Targets (ratios of medians)', [
+  ...targets.map(([target, ratio, bound, kind]) => ({
+    target,
+    'measured ratio': ratio,
+    met: (kind === 'max' ? ratio <= bound : ratio >= bound) ? 'yes' : 'NO',
+  })),
+  // Not a target: the same 4D/3D ratio on the arithmetic alone (each median minus the timing
+  // floor above), since the floor is most of a 3D product's time. Noisy: the floor is small
+  // differences of small numbers.
+  {
+    target: '(info) 4D / 3D product, timing floor subtracted',
+    'measured ratio': (measured[4].sMul - floor) / Math.max(measured[3].sMul - floor, 1e-9),
+    met: '-',
+  },
+]);

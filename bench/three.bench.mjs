@@ -94,7 +94,11 @@ function instrument(scene) {
   host.step = (elapsed, max) => {
     const pending = step(elapsed, max);
     // registered before the scene's own `then`, so it runs first when the promise resolves
-    if (pending !== null) pending.then(() => (clock.resolved = performance.now()), () => undefined);
+    if (pending !== null)
+      pending.then(
+        () => (clock.resolved = performance.now()),
+        () => undefined,
+      );
     return pending;
   };
   const applyReport = scene.applyReport.bind(scene);
@@ -148,7 +152,9 @@ function quantile(values, q) {
 /** Cubes the current slice meets (visible, with a non-empty cut). */
 function cutCount(scene) {
   let count = 0;
-  scene.traverse((o) => (count += o.isPhysinMesh && o instanceof HyperBoxMesh && o.visible && o.geometry.drawRange.count > 0 ? 1 : 0));
+  scene.traverse(
+    (o) => (count += o.isPhysinMesh && o instanceof HyperBoxMesh && o.visible && o.geometry.drawRange.count > 0 ? 1 : 0),
+  );
   return count;
 }
 
@@ -159,7 +165,13 @@ try {
   for (const mode of ['worker', 'main']) {
     const scene = build(mode === 'worker');
     await scene.host.ready;
-    lanes.push({ mode, scene, clock: instrument(scene), runs: Object.fromEntries(KEYS.map((k) => [k, []])), all: Object.fromEntries(KEYS.map((k) => [k, []])) });
+    lanes.push({
+      mode,
+      scene,
+      clock: instrument(scene),
+      runs: Object.fromEntries(KEYS.map((k) => [k, []])),
+      all: Object.fromEntries(KEYS.map((k) => [k, []])),
+    });
   }
   for (let f = 0; f < WARMUP; f += 1) for (const lane of lanes) await frame(lane);
   const warmS = (performance.now() - t0) / 1000;
@@ -242,17 +254,20 @@ try {
       },
     ],
   );
-  console.log('simulate() sends the request in worker mode; in main-thread mode it holds the engine\'s step.');
-  medianTable('Main-thread mode: the step (simulate() holds it) apart from the adapter\'s report handling, ms per frame (medians as above)', [
-    {
-      'step: simulate() (ms)': main.m.sim,
-      'step p90': main.p90.sim,
-      'apply report (ms)': main.m.apply,
-      'apply p90': main.p90.apply,
-      'of it: re-cut': main.m.recut,
-      'step share of the frame': `${((100 * main.m.sim) / main.m.main).toFixed(0)} %`,
-    },
-  ]);
+  console.log("simulate() sends the request in worker mode; in main-thread mode it holds the engine's step.");
+  medianTable(
+    "Main-thread mode: the step (simulate() holds it) apart from the adapter's report handling, ms per frame (medians as above)",
+    [
+      {
+        'step: simulate() (ms)': main.m.sim,
+        'step p90': main.p90.sim,
+        'apply report (ms)': main.m.apply,
+        'apply p90': main.p90.apply,
+        'of it: re-cut': main.m.recut,
+        'step share of the frame': `${((100 * main.m.sim) / main.m.main).toFixed(0)} %`,
+      },
+    ],
+  );
   console.log(`(${seconds.toFixed(1)} s, of it ${warmS.toFixed(1)} s building and warming up)`);
 
   const worst = Math.max(worker.m.slices, main.m.slices);

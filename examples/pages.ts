@@ -21,7 +21,8 @@ export const pages: readonly ExamplePage[] = [
   {
     dir: 'sandbox',
     title: 'Sandbox, in 3D and 4D',
-    summary: 'Bodies that fall; in 4D each is shown by its cut with the flat w = sliceW, and a ruler of w intervals moves the flat.',
+    summary:
+      'Bodies that fall; in 4D each is shown by its cut with the flat w = sliceW, and a ruler of w intervals moves the flat.',
     variants: ['d=4'],
   },
   {
@@ -37,19 +38,22 @@ export const pages: readonly ExamplePage[] = [
   {
     dir: 'joints',
     title: 'Joints',
-    summary: 'A pendulum, a whipping chain, a motorised door, a joint that breaks; in 4D a hinge that turns through w and a pin moved along it.',
+    summary:
+      'A pendulum, a whipping chain, a motorised door, a joint that breaks; in 4D a hinge that turns through w and a pin moved along it.',
     variants: ['d=4'],
   },
   {
     dir: 'stress',
     title: 'Stress: 1000 boxes',
-    summary: 'A pile of 1000 boxes, or 320 hypercubes in 4D, in this thread or in a worker: ms per step, main-thread ms per frame, awake bodies.',
+    summary:
+      'A pile of 1000 boxes, or 320 hypercubes in 4D, in this thread or in a worker: ms per step, main-thread ms per frame, awake bodies.',
     variants: ['d=4'],
   },
   {
     dir: 'trade',
     title: 'The trade: accuracy against cost',
-    summary: 'Run a stack, a chain, a 1000:1 chain or a 4D stack with your iterations, sub-steps and rate: error against time, and against cost.',
+    summary:
+      'Run a stack, a chain, a 1000:1 chain or a 4D stack with your iterations, sub-steps and rate: error against time, and against cost.',
     variants: ['worker=1'],
   },
   {

@@ -24,8 +24,14 @@ const browser = await chromium.launch({
 });
 // the donuts page plays its moves first: take it once the two are linked
 const waits = { donuts: 10000 };
-const shots = pages.map((p) => ({ url: `${base}/${p.dir}/`, out: join(root, 'examples/public/thumbs', `${p.dir}.png`), size: [480, 300], wait: waits[p.dir] ?? 4000 }));
-if (pages.some((p) => p.dir === 'sandbox')) shots.push({ url: `${base}/sandbox/?d=4`, out: join(root, 'docs/images/sandbox-4d.png'), size: [1200, 675] });
+const shots = pages.map((p) => ({
+  url: `${base}/${p.dir}/`,
+  out: join(root, 'examples/public/thumbs', `${p.dir}.png`),
+  size: [480, 300],
+  wait: waits[p.dir] ?? 4000,
+}));
+if (pages.some((p) => p.dir === 'sandbox'))
+  shots.push({ url: `${base}/sandbox/?d=4`, out: join(root, 'docs/images/sandbox-4d.png'), size: [1200, 675] });
 for (const shot of shots) {
   mkdirSync(dirname(shot.out), { recursive: true });
   const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });

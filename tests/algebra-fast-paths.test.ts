@@ -58,7 +58,10 @@ function specialRotors(n: number): Float64Array[] {
     // The exact double half turns ±I (I = e0123).
     const I = new Float64Array(D.r);
     I[7] = 1;
-    out.push(I, I.map((x) => -x));
+    out.push(
+      I,
+      I.map((x) => -x),
+    );
   }
   return out;
 }

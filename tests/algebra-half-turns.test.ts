@@ -79,7 +79,12 @@ describe('half turns: matrix → rotor → matrix', () => {
       for (let i = 0; i < n; i += 1) {
         for (let j = i + 1; j < n; j += 1) {
           for (const off of OFFSETS) {
-            const M = matMul(n, new Float64Array(n * n), Q, matMul(n, new Float64Array(n * n), planeMatrix(n, i, j, Math.PI + off), Qt));
+            const M = matMul(
+              n,
+              new Float64Array(n * n),
+              Q,
+              matMul(n, new Float64Array(n * n), planeMatrix(n, i, j, Math.PI + off), Qt),
+            );
             worst = Math.max(worst, maxDiff(roundTrip(D, M), M));
           }
         }

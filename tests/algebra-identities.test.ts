@@ -141,9 +141,28 @@ describe('brief §10 identities', () => {
   it('identity 9: matrix → rotor → matrix at θ = π, π ± 1e-11, 0, 1e-12 and 4D/6D multi-plane half turns (1e-13)', () => {
     const cases: [number, [number, number, number][]][] = [];
     for (const t of [Math.PI, Math.PI - 1e-11, Math.PI + 1e-11, 0, 1e-12, 0.3]) cases.push([3, [[0, 1, t]]]);
-    cases.push([4, [[0, 1, Math.PI], [2, 3, Math.PI]]]);
-    cases.push([4, [[0, 1, Math.PI - 1e-11], [2, 3, Math.PI]]]);
-    cases.push([6, [[0, 1, Math.PI], [2, 3, Math.PI - 1e-11], [4, 5, 0.7]]]);
+    cases.push([
+      4,
+      [
+        [0, 1, Math.PI],
+        [2, 3, Math.PI],
+      ],
+    ]);
+    cases.push([
+      4,
+      [
+        [0, 1, Math.PI - 1e-11],
+        [2, 3, Math.PI],
+      ],
+    ]);
+    cases.push([
+      6,
+      [
+        [0, 1, Math.PI],
+        [2, 3, Math.PI - 1e-11],
+        [4, 5, 0.7],
+      ],
+    ]);
     for (const [n, planes] of cases) {
       const D = dims(n);
       const R = rotorIdentity(D, new Float64Array(D.r));
@@ -260,7 +279,6 @@ describe('the specification conventions', () => {
     expect(Array.from(vel)).toEqual([0, 0, 0, 1]);
   });
 });
-
 
 describe('bivector helpers', () => {
   it('bivectorToMatrix and matrixToBivector are inverse, Ω is antisymmetric with Ω[j][i] = +ω_ij, n = 2..6 (exact)', () => {

@@ -162,7 +162,9 @@ describe('inertia from covariance', () => {
       // Forward: L = R I(R~ ω R) R~ = I_world ω, with I_world the operator of the rotated covariance.
       const M = rotorToMatrix(D, new Float64Array(n * n), R);
       const Cw = new Float64Array(n * n);
-      for (let a = 0; a < n; a += 1) for (let b = 0; b < n; b += 1) for (let i = 0; i < n; i += 1) Cw[a * n + b] = Cw[a * n + b]! + M[a * n + i]! * c[i]! * M[b * n + i]!;
+      for (let a = 0; a < n; a += 1)
+        for (let b = 0; b < n; b += 1)
+          for (let i = 0; i < n; i += 1) Cw[a * n + b] = Cw[a * n + b]! + M[a * n + i]! * c[i]! * M[b * n + i]!;
       const Iw = inertiaFromCovariance(D, new Float64Array(D.k * D.k), Cw);
       expect(maxDiff(applyOperator(D.k, Iw, w), L)).toBeLessThan(1e-12);
       // In place (out aliasing L) and with an explicit scratch give the same numbers.

@@ -73,12 +73,22 @@ describe('linear algebra', () => {
       // M = Q (1 + E) with E symmetric: its polar factor is exactly Q.
       const E = randomArray(rand, n * n, -1e-3, 1e-3);
       const Es = new Float64Array(n * n);
-      for (let i = 0; i < n; i += 1) for (let j = 0; j < n; j += 1) Es[i * n + j] = (i === j ? 1 : 0) + 0.5 * (E[i * n + j]! + E[j * n + i]!);
+      for (let i = 0; i < n; i += 1)
+        for (let j = 0; j < n; j += 1) Es[i * n + j] = (i === j ? 1 : 0) + 0.5 * (E[i * n + j]! + E[j * n + i]!);
       const M = matMul(n, new Float64Array(n * n), Q, Es);
       const O = orthonormalize(n, new Float64Array(n * n), M);
       expect(maxDiff(O, Q)).toBeLessThan(1e-14);
       // A positive scale does not change the result.
-      expect(maxDiff(orthonormalize(n, new Float64Array(n * n), M.map((x) => 3 * x)), Q)).toBeLessThan(1e-14);
+      expect(
+        maxDiff(
+          orthonormalize(
+            n,
+            new Float64Array(n * n),
+            M.map((x) => 3 * x),
+          ),
+          Q,
+        ),
+      ).toBeLessThan(1e-14);
     }
   });
 

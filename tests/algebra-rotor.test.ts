@@ -63,9 +63,7 @@ describe('rotor exponential', () => {
         // scale is a time: exp(−h B/2) = exp of the bivector hB.
         const h = 0.37;
         const hB = B.map((x) => x * h);
-        expect(maxDiff(rotorExp(D, new Float64Array(D.r), B, h), rotorExp(D, new Float64Array(D.r), hB))).toBeLessThan(
-          1e-14,
-        );
+        expect(maxDiff(rotorExp(D, new Float64Array(D.r), B, h), rotorExp(D, new Float64Array(D.r), hB))).toBeLessThan(1e-14);
       }
     });
   }

@@ -38,7 +38,8 @@ describe('rotor ↔ three.js quaternion and Matrix4', () => {
         const expected = rotorApplyVector(D, new Float64Array(3), R, v);
         const a = new Vector3(...v).applyQuaternion(q);
         const b = new Vector3(...v).applyMatrix4(m);
-        for (let i = 0; i < 3; i += 1) worst = Math.max(worst, Math.abs(a.getComponent(i) - expected[i]!), Math.abs(b.getComponent(i) - expected[i]!));
+        for (let i = 0; i < 3; i += 1)
+          worst = Math.max(worst, Math.abs(a.getComponent(i) - expected[i]!), Math.abs(b.getComponent(i) - expected[i]!));
       }
       const back = quaternionToRotor(new Float64Array(4), [q.x, q.y, q.z, q.w]);
       for (let i = 0; i < 4; i += 1) worst = Math.max(worst, Math.abs(back[i]! - R[i]!));
@@ -68,7 +69,11 @@ describe('rotor ↔ three.js quaternion and Matrix4', () => {
     const B = axisToBivector3([0, 0, 0], [axis.x, axis.y, axis.z]);
     // v_j += ω_ij r_i, v_i −= ω_ij r_j over the planes (0,1), (0,2), (1,2)
     const v = [0, 0, 0];
-    const planes = [[0, 1], [0, 2], [1, 2]] as const;
+    const planes = [
+      [0, 1],
+      [0, 2],
+      [1, 2],
+    ] as const;
     planes.forEach(([i, j], p) => {
       const rr = [r.x, r.y, r.z];
       v[j] += B[p]! * rr[i]!;

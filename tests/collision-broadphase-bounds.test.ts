@@ -62,12 +62,25 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
       const [lo, hi] = bounds(n, shape, x, M, margin);
       const corners: Float64Array[] = [];
       for (let mask = 0; mask < 1 << n; mask += 1) {
-        corners.push(toWorld(n, x, M, a.map((h, c) => ((mask >> c) & 1 ? h : -h))));
+        corners.push(
+          toWorld(
+            n,
+            x,
+            M,
+            a.map((h, c) => ((mask >> c) & 1 ? h : -h)),
+          ),
+        );
       }
       expectInside(corners, lo, hi);
       // The corner with signs sign(M[k][c])·sign along e_k is the support point.
       expectTouches(
-        (k, s) => toWorld(n, x, M, a.map((h, c) => (s * M[k * n + c]! >= 0 ? h : -h))),
+        (k, s) =>
+          toWorld(
+            n,
+            x,
+            M,
+            a.map((h, c) => (s * M[k * n + c]! >= 0 ? h : -h)),
+          ),
         lo,
         hi,
         margin,
@@ -84,7 +97,14 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
       const M = randomRotation(rand, n);
       const margin = trial % 2 === 0 ? 0 : 0.05;
       const [lo, hi] = bounds(n, shape, x, M, margin);
-      const samples = Array.from({ length: 50 }, () => toWorld(n, x, M, randomUnitVector(rand, n).map((v) => v * radius)));
+      const samples = Array.from({ length: 50 }, () =>
+        toWorld(
+          n,
+          x,
+          M,
+          randomUnitVector(rand, n).map((v) => v * radius),
+        ),
+      );
       expectInside(samples, lo, hi);
       expectTouches((k, s) => x.map((c, i) => c + (i === k ? s * radius : 0)), lo, hi, margin);
     }
@@ -165,12 +185,7 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
         return toWorld(n, x, M, local);
       });
       expectInside([...world, ...mixtures], lo, hi);
-      expectTouches(
-        (k, s) => world.reduce((best, p) => (s * p[k]! > s * best[k]! ? p : best)),
-        lo,
-        hi,
-        margin,
-      );
+      expectTouches((k, s) => world.reduce((best, p) => (s * p[k]! > s * best[k]! ? p : best)), lo, hi, margin);
     }
   });
 
@@ -187,14 +202,22 @@ describe.each(DIMS)('computeBounds in %iD', (n) => {
     // Identity pose, normal (0, 2, 0, ...), offset 1: the solid is y <= 0.5 (+ x_y) → max y = 0.5 + x_y + margin.
     const I = new Float64Array(n * n);
     for (let k = 0; k < n; k += 1) I[k * n + k] = 1;
-    const up: HalfSpaceGeometry = { kind: 'halfspace', normal: Float64Array.from({ length: n }, (_, k) => (k === 1 ? 2 : 0)), offset: 1 };
+    const up: HalfSpaceGeometry = {
+      kind: 'halfspace',
+      normal: Float64Array.from({ length: n }, (_, k) => (k === 1 ? 2 : 0)),
+      offset: 1,
+    };
     const [lo2, hi2] = bounds(n, up, x, I, 0.1);
     for (let k = 0; k < n; k += 1) {
       expect(lo2[k]).toBe(-Infinity);
       if (k === 1) expect(Math.abs(hi2[k]! - (0.5 + x[1]! + 0.1))).toBeLessThanOrEqual(TOL);
       else expect(hi2[k]).toBe(Infinity);
     }
-    const down: HalfSpaceGeometry = { kind: 'halfspace', normal: Float64Array.from({ length: n }, (_, k) => (k === 0 ? -1 : 0)), offset: 2 };
+    const down: HalfSpaceGeometry = {
+      kind: 'halfspace',
+      normal: Float64Array.from({ length: n }, (_, k) => (k === 0 ? -1 : 0)),
+      offset: 2,
+    };
     const [lo3] = bounds(n, down, x, I, 0);
     expect(Math.abs(lo3[0]! - (x[0]! - 2))).toBeLessThanOrEqual(TOL);
   });
@@ -212,12 +235,26 @@ describe('computeBounds argument checks', () => {
     expect(() => computeBounds(lo, [0, 0, 0] as unknown as Float64Array, 3, box, x, I3, 0)).toThrow(TypeError);
     expect(() => computeBounds(lo, hi, 9, box, x, I3, 0)).toThrow(RangeError);
     expect(() => computeBounds(lo, hi, 3, box, [0, 0], I3, 0)).toThrow(/x must have length 3/);
-    expect(() => computeBounds(lo, hi, 3, box, x, I3.map((v, i) => (i === 4 ? Infinity : v)), 0)).toThrow(/M\[4\]/);
+    expect(() =>
+      computeBounds(
+        lo,
+        hi,
+        3,
+        box,
+        x,
+        I3.map((v, i) => (i === 4 ? Infinity : v)),
+        0,
+      ),
+    ).toThrow(/M\[4\]/);
     expect(() => computeBounds(lo, hi, 3, box, x, I3, -0.1)).toThrow(/margin/);
     expect(() => computeBounds(lo, hi, 3, { kind: 'box', halfExtents: [1, 0, 1] }, x, I3, 0)).toThrow(/halfExtents\[1\]/);
-    expect(() => computeBounds(lo, hi, 3, { kind: 'torus', majorRadius: 1, minorRadius: 2, planeI: 0, planeJ: 1 }, x, I3, 0)).toThrow(/majorRadius/);
+    expect(() =>
+      computeBounds(lo, hi, 3, { kind: 'torus', majorRadius: 1, minorRadius: 2, planeI: 0, planeJ: 1 }, x, I3, 0),
+    ).toThrow(/majorRadius/);
     expect(() => computeBounds(lo, hi, 3, { kind: 'cone' } as never, x, I3, 0)).toThrow(/kind/);
-    expect(() => computeBounds(lo, hi, 3, { kind: 'mesh', vertices: [1, 2], facetNormals: [], facetOffsets: [] }, x, I3, 0)).toThrow(/vertices/);
+    expect(() =>
+      computeBounds(lo, hi, 3, { kind: 'mesh', vertices: [1, 2], facetNormals: [], facetOffsets: [] }, x, I3, 0),
+    ).toThrow(/vertices/);
     expect(Array.from(lo)).toEqual([7, 7, 7]);
     expect(Array.from(hi)).toEqual([7, 7, 7]);
   });

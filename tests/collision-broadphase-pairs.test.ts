@@ -118,7 +118,10 @@ function addPlane(s: Scene): void {
   const normal = randomUnitVector(s.rand, s.n);
   const offset = -0.5 * s.spread;
   // A non-unit normal: the broadphase normalises it.
-  const id = s.bp.createHalfSpaceProxy(normal.map((v) => v * 3), offset * 3);
+  const id = s.bp.createHalfSpaceProxy(
+    normal.map((v) => v * 3),
+    offset * 3,
+  );
   s.planes.set(id, { normal, offset });
 }
 
@@ -143,7 +146,11 @@ function mutate(s: Scene): void {
       bp.getBounds(id, lo, hi);
       const step = rand() < 0.5 ? 0.03 : 0.6;
       const d = randomArray(rand, n, -step, step);
-      bp.moveProxy(id, lo.map((v, k) => v + d[k]!), hi.map((v, k) => v + d[k]!));
+      bp.moveProxy(
+        id,
+        lo.map((v, k) => v + d[k]!),
+        hi.map((v, k) => v + d[k]!),
+      );
     } else if (r < 0.33) {
       bp.destroyProxy(id);
     } else if (r < 0.4) {
@@ -266,12 +273,24 @@ describe('work follows what moved (tree)', () => {
       }
     }
     bp.getBounds(dynamicId, lo, hi);
-    expect(bp.moveProxy(dynamicId, lo.map((v) => v + 0.05), hi.map((v) => v + 0.05))).toBe(false);
+    expect(
+      bp.moveProxy(
+        dynamicId,
+        lo.map((v) => v + 0.05),
+        hi.map((v) => v + 0.05),
+      ),
+    ).toBe(false);
     bp.updatePairs();
     expect(bp.stats.queries).toBe(0);
 
     // A jump out of it: exactly one tree query, and every pair that changed involves that proxy.
-    expect(bp.moveProxy(dynamicId, lo.map((v) => v + 1.5), hi.map((v) => v + 1.5))).toBe(true);
+    expect(
+      bp.moveProxy(
+        dynamicId,
+        lo.map((v) => v + 1.5),
+        hi.map((v) => v + 1.5),
+      ),
+    ).toBe(true);
     bp.updatePairs();
     expect(bp.stats.moved).toBe(1);
     expect(bp.stats.queries).toBe(1);
@@ -309,7 +328,15 @@ describe('sleeping and static pairs', () => {
     const plane = bp.createHalfSpaceProxy([0, 1, 0], -0.4);
     bp.updatePairs();
     const all = (): string[] => pairList(bp.pairs, bp.pairCount);
-    expect(all()).toEqual([`${a},${b}`, `${a},${ground}`, `${a},${wall}`, `${a},${plane}`, `${b},${ground}`, `${b},${wall}`, `${b},${plane}`]);
+    expect(all()).toEqual([
+      `${a},${b}`,
+      `${a},${ground}`,
+      `${a},${wall}`,
+      `${a},${plane}`,
+      `${b},${ground}`,
+      `${b},${wall}`,
+      `${b},${plane}`,
+    ]);
     bp.setAwake(a, false);
     bp.updatePairs();
     // a asleep: a–b still reported (b awake); a–static pairs are not.
@@ -337,7 +364,12 @@ describe('steady-state allocation', () => {
     const half = 0.5;
     const lo = new Float64Array(n);
     const hi = new Float64Array(n);
-    const ids = centres.map((c) => bp.createProxy(c.map((v) => v - half), c.map((v) => v + half)));
+    const ids = centres.map((c) =>
+      bp.createProxy(
+        c.map((v) => v - half),
+        c.map((v) => v + half),
+      ),
+    );
     bp.createHalfSpaceProxy([0, 1, 0, 0], -2);
     const velocity = centres.map(() => randomArray(rand, n, -0.02, 0.02));
     const step = (): void => {

@@ -25,7 +25,6 @@ import { beforeAll, describe, expect, it } from 'vitest';
 const root = fileURLToPath(new URL('..', import.meta.url));
 const dist = join(root, 'packages/engine/dist');
 
-
 // The child: builds the pairs, warms up, measures. Prints one JSON line.
 const SCRIPT = String.raw`
 import { PerformanceObserver, performance } from 'node:perf_hooks';
@@ -170,7 +169,15 @@ beforeAll(() => {
   ensureBuiltEngine();
   const out = execFileSync(
     process.execPath,
-    ['--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', '--input-type=module', '-e', SCRIPT, pathToFileURL(dist).href],
+    [
+      '--expose-gc',
+      '--max-semi-space-size=256',
+      '--min-semi-space-size=64',
+      '--input-type=module',
+      '-e',
+      SCRIPT,
+      pathToFileURL(dist).href,
+    ],
     { cwd: root, encoding: 'utf8' },
   );
   result = JSON.parse(out.trim().split('\n').pop()!) as typeof result;

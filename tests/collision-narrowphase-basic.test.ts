@@ -49,7 +49,7 @@ describe('sphere–sphere', () => {
         for (let c = 0; c < n; c += 1) {
           expect(Math.abs(out.normal[c] - d[c] / dist)).toBeLessThanOrEqual(TOL);
           // midway between x_A + ρ_A N and x_B − ρ_B N
-          const mid = (pa.x[c] + ra * d[c] / dist + pb.x[c] - rb * d[c] / dist) / 2;
+          const mid = (pa.x[c] + (ra * d[c]) / dist + pb.x[c] - (rb * d[c]) / dist) / 2;
           expect(Math.abs(out.points[c] - mid)).toBeLessThanOrEqual(TOL * 10);
         }
       }
@@ -158,7 +158,9 @@ describe('box–sphere', () => {
     const ps = createPose(3);
     ps.x[0] = 1 + 0.5 + 0.021;
     const out = createManifold(3);
-    expect(collideBoxSphere(out, 3, box([1, 1, 1]), createPose(3), sphere(0.5), ps, 0.02, createNarrowphaseScratch(3))).toBe(false);
+    expect(collideBoxSphere(out, 3, box([1, 1, 1]), createPose(3), sphere(0.5), ps, 0.02, createNarrowphaseScratch(3))).toBe(
+      false,
+    );
     expect(out.count).toBe(0);
   });
 });
@@ -203,7 +205,18 @@ describe('box–half-space', () => {
       const pb = createPose(n);
       turn(n, pb.M, 0, 1, 0.001);
       pb.x[1] = 0.49;
-      expect(collideBoxHalfSpace(out, n, box(new Float64Array(n).fill(0.5)), pb, plane([0, 1, 0, 0, 0, 0].slice(0, n), 0), createPose(n), 0.02, scratch)).toBe(true);
+      expect(
+        collideBoxHalfSpace(
+          out,
+          n,
+          box(new Float64Array(n).fill(0.5)),
+          pb,
+          plane([0, 1, 0, 0, 0, 0].slice(0, n), 0),
+          createPose(n),
+          0.02,
+          scratch,
+        ),
+      ).toBe(true);
       expect(out.count).toBe(Math.min(1 << (n - 1), maxManifoldPoints(n)));
       for (let p = 1; p < out.count; p += 1) expect(out.separations[0]).toBeLessThanOrEqual(out.separations[p]);
     }
@@ -241,9 +254,7 @@ describe('dispatch', () => {
         expect(ab.ids[0]).toBe(ba.ids[0]);
       }
       // half-space first: its pairs live in the box's table
-      expect(collide(ab, n, H, createPose(n), B, pb, 0.02, scratch)).toBe(
-        collide(ba, n, B, pb, H, createPose(n), 0.02, scratch),
-      );
+      expect(collide(ab, n, H, createPose(n), B, pb, 0.02, scratch)).toBe(collide(ba, n, B, pb, H, createPose(n), 0.02, scratch));
       for (let c = 0; c < n; c += 1) expect(ab.normal[c]).toBe(-ba.normal[c]);
       expect(Array.from(ab.ids.subarray(0, ab.count))).toEqual(Array.from(ba.ids.subarray(0, ba.count)));
     }
@@ -297,9 +308,9 @@ describe('dispatch', () => {
     expect(() => collidePair(out, n, S, { x: new Float64Array(2), M: pose.M }, S, pose, 0, scratch)).toThrow(TypeError);
     expect(() => collidePair(out, 4, S, pose, S, pose, 0, scratch)).toThrow(RangeError);
     expect(() => collidePair(out, n, S, pose, S, pose, 0, createNarrowphaseScratch(4))).toThrow(/scratch/);
-    expect(() => collidePair(out, n, { kind: 'box', halfExtents: [1, -1, 1] } as CollidableShape, pose, S, pose, 0, scratch)).toThrow(
-      /halfExtents/,
-    );
+    expect(() =>
+      collidePair(out, n, { kind: 'box', halfExtents: [1, -1, 1] } as CollidableShape, pose, S, pose, 0, scratch),
+    ).toThrow(/halfExtents/);
     expect(out.count).toBe(5);
     const pb = createPose(n);
     pb.x[0] = 1.5;

@@ -2,11 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Manifold, Pose } from '../packages/engine/src/collision/manifold.js';
-import {
-  createNarrowphaseScratch,
-  SAT_EDGE,
-  SAT_FACE_A,
-} from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch, SAT_EDGE, SAT_FACE_A } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { seeded, uniform } from './support/random.js';
 import { turn } from './support/poses.js';
 import { box } from './support/shapes.js';

@@ -1,10 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { boxBoxSat3 } from '../packages/engine/src/collision/box-box-sat3.js';
-import {
-  boxBoxSatGeneral,
-  satAxisCount,
-  satAxisTable,
-} from '../packages/engine/src/collision/box-box-sat.js';
+import { boxBoxSatGeneral, satAxisCount, satAxisTable } from '../packages/engine/src/collision/box-box-sat.js';
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose } from '../packages/engine/src/collision/manifold.js';
 import {

@@ -1,10 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Pose } from '../packages/engine/src/collision/manifold.js';
-import type {
-  CollisionHalfSpace,
-  CollisionTorus,
-} from '../packages/engine/src/collision/narrowphase-shapes.js';
+import type { CollisionHalfSpace, CollisionTorus } from '../packages/engine/src/collision/narrowphase-shapes.js';
 import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { collideTorusHalfSpace } from '../packages/engine/src/collision/torus-halfspace.js';
 import { collideTorusSphere } from '../packages/engine/src/collision/torus-sphere.js';
@@ -141,7 +138,9 @@ describe('torus–half-space', () => {
     const pt = createPose(4);
     pt.x[1] = r + 0.03;
     const out = createManifold(4);
-    expect(collideTorusHalfSpace(out, 4, torus(0, 2), pt, floor(4), createPose(4), 0.02, createNarrowphaseScratch(4))).toBe(false);
+    expect(collideTorusHalfSpace(out, 4, torus(0, 2), pt, floor(4), createPose(4), 0.02, createNarrowphaseScratch(4))).toBe(
+      false,
+    );
     expect(out.count).toBe(0);
   });
 });

@@ -129,7 +129,11 @@ function expectHit(hit: RayHit, t: number, p: ArrayLike<number>, normal: ArrayLi
 function expectInside(hit: RayHit, o: ArrayLike<number>, d: Float64Array): void {
   expect(hit.distance).toBe(0);
   expectVec(hit.point, o, 0);
-  expectVec(hit.normal, unit(d).map((v) => -v), 1e-15);
+  expectVec(
+    hit.normal,
+    unit(d).map((v) => -v),
+    1e-15,
+  );
 }
 
 describe.each(DIMS)('ray casts in %iD', (n) => {
@@ -142,11 +146,28 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
       const M = randomRotation(rand, n);
       const u = randomUnit(rand, n);
       const t0 = uniform(rand, 0.1, 10);
-      const ray = enteringRay(rand, n, x, M, u.map((v) => v * radius), u, t0);
+      const ray = enteringRay(
+        rand,
+        n,
+        x,
+        M,
+        u.map((v) => v * radius),
+        u,
+        t0,
+      );
       expectHit(cast(n, shape, x, M, ray.o, ray.d), t0, ray.p, ray.normal);
       expect(cast(n, shape, x, M, ray.o, ray.d, t0 * (1 - 1e-9)).distance).toBe(-1);
       // The same ray backwards misses: the sphere is behind it.
-      expect(cast(n, shape, x, M, ray.o, ray.d.map((v) => -v)).distance).toBe(-1);
+      expect(
+        cast(
+          n,
+          shape,
+          x,
+          M,
+          ray.o,
+          ray.d.map((v) => -v),
+        ).distance,
+      ).toBe(-1);
       // A ray whose line passes at distance radius·1.01 from the centre misses.
       const w = randomUnit(rand, n);
       const side = unit(w.map((v, i) => v - dot(w, u) * u[i]!));
@@ -171,13 +192,32 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
       const ray = enteringRay(rand, n, x, M, p, axis(n, k, s), t0);
       expectHit(cast(n, shape, x, M, ray.o, ray.d), t0, ray.p, ray.normal);
       expect(cast(n, shape, x, M, ray.o, ray.d, t0 - 1e-6).distance).toBe(-1);
-      expect(cast(n, shape, x, M, ray.o, ray.d.map((v) => -v)).distance).toBe(-1);
+      expect(
+        cast(
+          n,
+          shape,
+          x,
+          M,
+          ray.o,
+          ray.d.map((v) => -v),
+        ).distance,
+      ).toBe(-1);
       // Parallel to face k, outside its slab: a miss (the d = 0 branch of the slab test).
       const outside = a.map((h, c) => (c === k ? s * h * 1.001 : 0));
       const along = axis(n, (k + 1) % n);
-      const o = toWorld(n, x, M, outside.map((v, c) => v - 5 * along[c]!));
+      const o = toWorld(
+        n,
+        x,
+        M,
+        outside.map((v, c) => v - 5 * along[c]!),
+      );
       expect(cast(n, shape, x, M, o, rotate(n, M, along)).distance).toBe(-1);
-      const inside = toWorld(n, x, M, a.map((h) => uniform(rand, -0.9, 0.9) * h));
+      const inside = toWorld(
+        n,
+        x,
+        M,
+        a.map((h) => uniform(rand, -0.9, 0.9) * h),
+      );
       expectInside(cast(n, shape, x, M, inside, ray.d), inside, ray.d);
     }
   });
@@ -197,18 +237,43 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
       const t0 = uniform(rand, 0.1, 10);
       const ray = enteringRay(rand, n, x, M, p, nrm, t0);
       expectHit(cast(n, shape, x, M, ray.o, ray.d), t0, ray.p, ray.normal);
-      expect(cast(n, shape, x, M, ray.o, ray.d.map((v) => -v)).distance).toBe(-1);
+      expect(
+        cast(
+          n,
+          shape,
+          x,
+          M,
+          ray.o,
+          ray.d.map((v) => -v),
+        ).distance,
+      ).toBe(-1);
       // A miss writes the distance only.
       const kept = createRayHit(n);
       kept.point.fill(9);
       kept.normal.fill(9);
-      expect(rayCastShape(n, shape, x, M, ray.o, ray.d.map((v) => -v), Infinity, kept)).toBe(-1);
+      expect(
+        rayCastShape(
+          n,
+          shape,
+          x,
+          M,
+          ray.o,
+          ray.d.map((v) => -v),
+          Infinity,
+          kept,
+        ),
+      ).toBe(-1);
       expect(kept.distance).toBe(-1);
       expect([...kept.point, ...kept.normal].every((v) => v === 9)).toBe(true);
       const tangent = unit(randomUnit(rand, n).map((v, i, all) => v - dot(all, nrm) * nrm[i]!));
       // (Rounding leaves the rotated tangent a hair off parallel: a hit ~1e16 away, so cap the range.)
       expect(cast(n, shape, x, M, ray.o, rotate(n, M, tangent), 1e6).distance).toBe(-1);
-      const below = toWorld(n, x, M, p.map((v, i) => v - 0.3 * nrm[i]!));
+      const below = toWorld(
+        n,
+        x,
+        M,
+        p.map((v, i) => v - 0.3 * nrm[i]!),
+      );
       expectInside(cast(n, shape, x, M, below, ray.d), below, ray.d);
     }
   });
@@ -229,7 +294,16 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
       const t0 = uniform(rand, 0.1, 10);
       const ray = enteringRay(rand, n, x, M, p, nrm, t0);
       expectHit(cast(n, shape, x, M, ray.o, ray.d), t0, ray.p, ray.normal);
-      expect(cast(n, shape, x, M, ray.o, ray.d.map((v) => -v)).distance).toBe(-1);
+      expect(
+        cast(
+          n,
+          shape,
+          x,
+          M,
+          ray.o,
+          ray.d.map((v) => -v),
+        ).distance,
+      ).toBe(-1);
       // A vertex's axis line through the apex hits at the vertex: t = L − sc along −e_k.
       const k = trial % n;
       const o = toWorld(n, x, M, axis(n, k, sc + 3));
@@ -240,7 +314,12 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
       const off = axis(n, (k + 1) % n, sc * 1.01).map((v, c) => v + (c === k ? -10 : 0));
       const miss = cast(n, shape, x, M, toWorld(n, x, M, off), rotate(n, M, axis(n, k)));
       expect(miss.distance).toBe(-1);
-      const inside = toWorld(n, x, M, p.map((v) => v * 0.5));
+      const inside = toWorld(
+        n,
+        x,
+        M,
+        p.map((v) => v * 0.5),
+      );
       expectInside(cast(n, shape, x, M, inside, ray.d), inside, ray.d);
     }
   });
@@ -284,7 +363,9 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
         expectHit(hit, L - R - r, toWorld(n, x, M, axis(n, j, -(R + r))), rotate(n, M, axis(n, j, -1)));
       }
       // Beyond maxDistance: a miss; start inside the tube: distance 0.
-      expect(cast(n, shape, x, M, toWorld(n, x, M, axis(n, i, -L)), rotate(n, M, axis(n, i)), L - R - r - 1e-6).distance).toBe(-1);
+      expect(cast(n, shape, x, M, toWorld(n, x, M, axis(n, i, -L)), rotate(n, M, axis(n, i)), L - R - r - 1e-6).distance).toBe(
+        -1,
+      );
       const inTube = toWorld(n, x, M, axis(n, i, R + 0.5 * r));
       const d = rotate(n, M, axis(n, j));
       expectInside(cast(n, shape, x, M, inTube, d), inTube, d);
@@ -353,8 +434,16 @@ describe.each(DIMS)('ray casts in %iD', (n) => {
         const h = 1e-6;
         const g = Array.from({ length: n }, (_, c) => {
           const e = axis(n, c, h);
-          const fp = inside(0, hit.point.map((v, q) => v + e[q]!), d);
-          const fm = inside(0, hit.point.map((v, q) => v - e[q]!), d);
+          const fp = inside(
+            0,
+            hit.point.map((v, q) => v + e[q]!),
+            d,
+          );
+          const fm = inside(
+            0,
+            hit.point.map((v, q) => v - e[q]!),
+            d,
+          );
           return (fp - fm) / (2 * h);
         });
         expectVec(hit.normal, unit(Float64Array.from(g)), 1e-6);

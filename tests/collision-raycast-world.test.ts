@@ -16,7 +16,8 @@ const KINDS: BroadphaseKind[] = ['tree', 'sap'];
 /** The cross polytope |x|₁ <= s as facet planes and vertices. */
 function crossPolytope(n: number, s: number): QueryShape {
   const vertices: number[] = [];
-  for (let k = 0; k < n; k += 1) for (const sign of [1, -1]) vertices.push(...Array.from({ length: n }, (_, c) => (c === k ? sign * s : 0)));
+  for (let k = 0; k < n; k += 1)
+    for (const sign of [1, -1]) vertices.push(...Array.from({ length: n }, (_, c) => (c === k ? sign * s : 0)));
   const normals: number[] = [];
   const offsets: number[] = [];
   for (let mask = 0; mask < 1 << n; mask += 1) {
@@ -33,7 +34,12 @@ interface Body {
 }
 
 /** A random scene of every shape kind, registered in the broadphase by their exact bounds. */
-function makeScene(kind: BroadphaseKind, n: number, seed: number, count: number): {
+function makeScene(
+  kind: BroadphaseKind,
+  n: number,
+  seed: number,
+  count: number,
+): {
   bp: Broadphase;
   bodies: Map<number, Body>;
   source: RayCastSource;
@@ -113,7 +119,8 @@ describe.each(KINDS)('rayCastClosest (%s)', (kind) => {
     for (let q = 0; q < 80; q += 1) {
       const o = randomArray(rand, n, -1.3 * spread, 1.3 * spread);
       // Half the rays aim at a body's centre, so most of them hit something.
-      const target = q % 2 === 0 ? [...bodies.values()][Math.floor(rand() * (bodies.size - 1))]!.x : randomArray(rand, n, -spread, spread);
+      const target =
+        q % 2 === 0 ? [...bodies.values()][Math.floor(rand() * (bodies.size - 1))]!.x : randomArray(rand, n, -spread, spread);
       const d = target.map((v, k) => v - o[k]!);
       if (Math.hypot(...d) < 1e-9) continue;
       const maxDistance = q % 5 === 0 ? uniform(rand, 0.5, 3) : Infinity;

@@ -34,7 +34,20 @@ if (typeof globalThis.gc !== 'function') {
 }
 
 const engine = await import('@physin/engine');
-const { World, Body, HyperBox, HyperSphere, HyperTorus, HalfSpace, dims, PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint } = engine;
+const {
+  World,
+  Body,
+  HyperBox,
+  HyperSphere,
+  HyperTorus,
+  HalfSpace,
+  dims,
+  PointJoint,
+  DistanceJoint,
+  FixedJoint,
+  HingeJoint,
+  SubspaceJoint,
+} = engine;
 
 const steps = Number(process.argv[2] ?? 10_000);
 const warmup = 3_000;
@@ -62,7 +75,13 @@ function makeWorld(n) {
   gravity[1] = -9.81;
   const world = new World({ dimensions: n, gravity });
   for (let b = 0; b < 100; b += 1) {
-    const shape = b % 3 === 2 ? HyperSphere(D, r(0.2, 0.8)) : HyperBox(D, Array.from({ length: n }, () => r(0.1, 1)));
+    const shape =
+      b % 3 === 2
+        ? HyperSphere(D, r(0.2, 0.8))
+        : HyperBox(
+            D,
+            Array.from({ length: n }, () => r(0.1, 1)),
+          );
     const type = b % 10 === 9 ? 'kinematic' : b % 10 === 8 ? 'static' : 'dynamic';
     world.addBody(
       new Body(D, {
@@ -95,7 +114,8 @@ function makeStackWorld(n) {
     p[1] = y;
     return p;
   };
-  for (let i = 0; i < 9; i += 1) world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: at(0, 0.5 + i) }));
+  for (let i = 0; i < 9; i += 1)
+    world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: at(0, 0.5 + i) }));
   for (let i = 0; i < 4; i += 1) world.addBody(new Body(D, { shape: HyperSphere(D, 0.4), mass: 1, position: at(2 + i, 0.4) }));
   const torus = new Body(D, { shape: HyperTorus(D, 1, 0.25, [0, 2]), mass: 1, position: at(-3, 0.25) });
   world.addBody(torus);
@@ -127,20 +147,38 @@ function makeJointWorld(n) {
   world.addConstraint(new PointJoint(links[0], null, at(-0.5, 0), at(0, 0)));
   for (let i = 1; i < 8; i += 1) world.addConstraint(new PointJoint(links[i - 1], links[i], at(0.5, 0), at(-0.5, 0)));
   const ring = [];
-  for (let i = 0; i < 4; i += 1) ring.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(-30 + (i % 2), 2 + (i >> 1), 1) })));
+  for (let i = 0; i < 4; i += 1)
+    ring.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(-30 + (i % 2), 2 + (i >> 1), 1) })));
   world.addConstraint(new PointJoint(ring[0], null, at(0, 0), at(-30, 2, 1)));
   for (let i = 0; i < 4; i += 1) world.addConstraint(new DistanceJoint(ring[i], ring[(i + 1) % 4], at(0, 0), at(0, 0)));
   const base = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.3)), mass: 2, position: at(-40, 0, 3) }));
   const arm = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.2)), mass: 1, position: at(-39, 0, 3) }));
   world.addConstraint(new FixedJoint(base, null, at(0, 0), at(-40, 0, 3)));
-  world.addConstraint(new HingeJoint(base, arm, at(0.5, 0), at(-0.5, 0), { plane: 0, lowerAngle: -1, upperAngle: 1, motorSpeed: 2, maxMotorTorque: 5 }));
+  world.addConstraint(
+    new HingeJoint(base, arm, at(0.5, 0), at(-0.5, 0), {
+      plane: 0,
+      lowerAngle: -1,
+      upperAngle: 1,
+      motorSpeed: 2,
+      maxMotorTorque: 5,
+    }),
+  );
   const bob = world.addBody(new Body(D, { shape: ball(), mass: 1, position: at(-50, -1, 3) }));
   world.addConstraint(new DistanceJoint(bob, null, at(0, 0), at(-50, 0, 3), { mode: 'rope', hertz: 4, damping: 0.5 }));
-  const pinned = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.25)), mass: 1, position: at(30, -19.75, -3), angularVelocity: Array.from({ length: D.k }, (_, p) => 0.5 + p) }));
+  const pinned = world.addBody(
+    new Body(D, {
+      shape: HyperBox(D, new Array(n).fill(0.25)),
+      mass: 1,
+      position: at(30, -19.75, -3),
+      angularVelocity: Array.from({ length: D.k }, (_, p) => 0.5 + p),
+    }),
+  );
   const lock = [n - 1];
   const planes = [];
   for (let p = 0; p < D.k; p += 1) if (D.planeJ[p] === n - 1) planes.push(p);
-  world.addConstraint(new SubspaceJoint(pinned, null, { lockAxes: lock, lockPlanes: planes, worldFrame: true, localB: at(0, 0, -3) }));
+  world.addConstraint(
+    new SubspaceJoint(pinned, null, { lockAxes: lock, lockPlanes: planes, worldFrame: true, localB: at(0, 0, -3) }),
+  );
   return world;
 }
 
@@ -208,9 +246,23 @@ for (const [name, make] of scenes) {
       const grown = spacesAfter[i].space_used_size - spacesBefore[i].space_used_size;
       if (grown !== 0) spaces[spacesAfter[i].space_name] = grown;
     }
-    windows.push({ bytes: after - before, newSpace: spaces.new_space ?? 0, spaces, collections: inWindow.length, kinds: inWindow.map((g) => g.kind), msPerStep: (t1 - t0) / steps });
+    windows.push({
+      bytes: after - before,
+      newSpace: spaces.new_space ?? 0,
+      spaces,
+      collections: inWindow.length,
+      kinds: inWindow.map((g) => g.kind),
+      msPerStep: (t1 - t0) / steps,
+    });
   }
-  results[name] = { steps, settleProbes: probes, bodies: world.bodies.length, joints: world.constraints?.length ?? 0, touching: world.touchingCount, windows };
+  results[name] = {
+    steps,
+    settleProbes: probes,
+    bodies: world.bodies.length,
+    joints: world.constraints?.length ?? 0,
+    touching: world.touchingCount,
+    windows,
+  };
 }
 observer.disconnect();
 console.log(JSON.stringify(results));

@@ -41,7 +41,6 @@ import { beforeAll, describe, expect, it } from 'vitest';
 
 const root = fileURLToPath(new URL('..', import.meta.url));
 
-
 interface Window {
   bytes: number;
   newSpace: number;
@@ -82,7 +81,15 @@ beforeAll(() => {
   for (const scene of SCENES) {
     const out = execFileSync(
       process.execPath,
-      ['--no-concurrent-recompilation', '--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/engine-allocation.mjs'), '10000', scene],
+      [
+        '--no-concurrent-recompilation',
+        '--expose-gc',
+        '--max-semi-space-size=256',
+        '--min-semi-space-size=64',
+        join(root, 'tests/engine-allocation.mjs'),
+        '10000',
+        scene,
+      ],
       { cwd: root, encoding: 'utf8' },
     );
     Object.assign(results, JSON.parse(out.trim().split('\n').pop()!) as Record<string, Measure>);

@@ -15,10 +15,19 @@ describe('getRotor and setRotor', () => {
   for (const n of [3, 4]) {
     it(`n = ${n}: a box's rotor round-trips, keeps the position and the world angular velocity`, () => {
       const D = dims(n);
-      const body = new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: new Array(n).fill(0).map((_, i) => i + 1) });
+      const body = new Body(D, {
+        shape: HyperBox(D, new Array(n).fill(0.5)),
+        mass: 1,
+        position: new Array(n).fill(0).map((_, i) => i + 1),
+      });
       const w = new Float64Array(D.k).map((_, i) => 0.1 * (i + 1));
       body.setAngularVelocity(w);
-      const R = rotorMul(D, new Float64Array(D.r), rotorFromPlane(D, new Float64Array(D.r), 0, 1, 0.7), rotorFromPlane(D, new Float64Array(D.r), 1, 2, -0.4));
+      const R = rotorMul(
+        D,
+        new Float64Array(D.r),
+        rotorFromPlane(D, new Float64Array(D.r), 0, 1, 0.7),
+        rotorFromPlane(D, new Float64Array(D.r), 1, 2, -0.4),
+      );
       const x = [...body.x];
       body.setRotor(R);
       close(body.getRotor(), R, 1e-15);

@@ -5,12 +5,20 @@
 import { describe, expect, it } from 'vitest';
 import { Body, dims, HalfSpace, HyperBox, HyperSphere, World } from '@physin/engine';
 import type { Dims, Shape } from '@physin/engine';
-import { rotorApplyBivector, rotorApplyBivectorInverse, rotorApplyVector, rotorFromPlane, rotorMul, wedge } from '@physin/algebra';
+import {
+  rotorApplyBivector,
+  rotorApplyBivectorInverse,
+  rotorApplyVector,
+  rotorFromPlane,
+  rotorMul,
+  wedge,
+} from '@physin/algebra';
 import { randomArray, seeded, uniform } from './support/random.js';
 
 function close(a: ArrayLike<number>, b: ArrayLike<number>, tol: number): void {
   expect(a.length).toBe(b.length);
-  for (let i = 0; i < a.length; i += 1) expect(Math.abs(a[i]! - b[i]!), `index ${i}: ${a[i]} vs ${b[i]}`).toBeLessThanOrEqual(tol);
+  for (let i = 0; i < a.length; i += 1)
+    expect(Math.abs(a[i]! - b[i]!), `index ${i}: ${a[i]} vs ${b[i]}`).toBeLessThanOrEqual(tol);
 }
 
 /** A random unit rotor: a product of plane turns. */
@@ -92,10 +100,25 @@ describe('Body construction', () => {
     ['position of length 2', () => new Body(D3, { shape: box3, position: [0, 1] }), 'TypeError', /'position'/],
     ['position with Infinity', () => new Body(D3, { shape: box3, position: [0, Infinity, 0] }), 'RangeError', /'position'/],
     ['velocity with NaN', () => new Body(D3, { shape: box3, velocity: [0, NaN, 0] }), 'RangeError', /'velocity'/],
-    ['angular velocity of length 4', () => new Body(D3, { shape: box3, angularVelocity: [0, 0, 0, 0] }), 'TypeError', /'angularVelocity'/],
+    [
+      'angular velocity of length 4',
+      () => new Body(D3, { shape: box3, angularVelocity: [0, 0, 0, 0] }),
+      'TypeError',
+      /'angularVelocity'/,
+    ],
     ['rotor of length 3', () => new Body(D3, { shape: box3, rotor: [1, 0, 0] }), 'TypeError', /'rotor'/],
-    ['half-space on a dynamic body', () => new Body(D3, { shape: HalfSpace(D3, [0, 1, 0], 0), mass: 1 }), 'RangeError', /half-space/],
-    ['half-space typed dynamic', () => new Body(D3, { shape: HalfSpace(D3, [0, 1, 0], 0), type: 'dynamic' }), 'RangeError', /half-space|'mass'/],
+    [
+      'half-space on a dynamic body',
+      () => new Body(D3, { shape: HalfSpace(D3, [0, 1, 0], 0), mass: 1 }),
+      'RangeError',
+      /half-space/,
+    ],
+    [
+      'half-space typed dynamic',
+      () => new Body(D3, { shape: HalfSpace(D3, [0, 1, 0], 0), type: 'dynamic' }),
+      'RangeError',
+      /half-space|'mass'/,
+    ],
     ['static with a velocity', () => new Body(D3, { shape: box3, mass: 0, velocity: [1, 0, 0] }), 'RangeError', /static/],
     ['unknown option', () => new Body(D3, { shape: box3, mas: 2 } as never), 'RangeError', /'mas'/],
     ['negative friction', () => new Body(D3, { shape: box3, material: { friction: -1 } }), 'RangeError', /friction/],
@@ -122,7 +145,11 @@ describe('Body velocities, impulses, forces', () => {
     it(`n = ${n}: setAngularVelocity sets L = I_world ω (checked in the body frame, 1e-13) and kineticEnergy = ½mv² + ½ω·L`, () => {
       const D = dims(n);
       const rand = seeded(60 + n);
-      const body = new Body(D, { shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1.5))), mass: 2.5, rotor: randomRotor(D, rand) });
+      const body = new Body(D, {
+        shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1.5))),
+        mass: 2.5,
+        rotor: randomRotor(D, rand),
+      });
       const omega = randomArray(rand, D.k, -2, 2);
       const v = randomArray(rand, n, -2, 2);
       body.setAngularVelocity(omega).setLinearVelocity(v);
@@ -140,11 +167,19 @@ describe('Body velocities, impulses, forces', () => {
     it(`n = ${n}: applyImpulse: v += j/m, L += r ∧ j, ω = I_world⁻¹ L (1e-13); applyCentralImpulse leaves L`, () => {
       const D = dims(n);
       const rand = seeded(80 + n);
-      const body = new Body(D, { shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1.5))), mass: 4, rotor: randomRotor(D, rand) });
+      const body = new Body(D, {
+        shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1.5))),
+        mass: 4,
+        rotor: randomRotor(D, rand),
+      });
       const j = randomArray(rand, n);
       const r = randomArray(rand, n);
       body.applyImpulse(j, r);
-      close(body.v, Array.from(j, (x) => x / 4), 1e-15);
+      close(
+        body.v,
+        Array.from(j, (x) => x / 4),
+        1e-15,
+      );
       close(body.L, wedge(D, new Float64Array(D.k), r, j), 1e-15);
       // ω from L through the body frame.
       const Lb = rotorApplyBivectorInverse(D, new Float64Array(D.k), body.R, body.L);
@@ -152,7 +187,11 @@ describe('Body velocities, impulses, forces', () => {
       close(body.w, rotorApplyBivector(D, new Float64Array(D.k), body.R, Lb), 1e-13);
       const L = Float64Array.from(body.L);
       body.applyCentralImpulse(j);
-      close(body.v, Array.from(j, (x) => x / 2), 1e-15);
+      close(
+        body.v,
+        Array.from(j, (x) => x / 2),
+        1e-15,
+      );
       expect(Array.from(body.L)).toEqual(Array.from(L));
     });
   }
@@ -170,7 +209,11 @@ describe('Body velocities, impulses, forces', () => {
     close(body.v, [(h * 3) / 2, (h * 2) / 2, (h * 3) / 2, (h * 4) / 2], 1e-15);
     const expected = wedge(D, new Float64Array(6), r, f);
     expected[5] = expected[5]! + 6;
-    close(body.L, Array.from(expected, (x) => h * x), 1e-15);
+    close(
+      body.L,
+      Array.from(expected, (x) => h * x),
+      1e-15,
+    );
     expect(Array.from(body.force)).toEqual([0, 0, 0, 0]);
     expect(Array.from(body.torque)).toEqual([0, 0, 0, 0, 0, 0]);
     const v = Float64Array.from(body.v);
@@ -198,13 +241,27 @@ describe('Body velocities, impulses, forces', () => {
 
   it('setMass: inertia scales, v and ω are kept, L rescales; 0 makes the body static; a half-space refuses a mass', () => {
     const D = dims(4);
-    const body = new Body(D, { shape: HyperBox(D, [1, 0.7, 0.5, 0.3]), mass: 1, rotor: randomRotor(D, seeded(9)), velocity: [1, 0, 0, 0], angularVelocity: [0.3, 1, -0.2, 0.4, 0.1, 2] });
+    const body = new Body(D, {
+      shape: HyperBox(D, [1, 0.7, 0.5, 0.3]),
+      mass: 1,
+      rotor: randomRotor(D, seeded(9)),
+      velocity: [1, 0, 0, 0],
+      angularVelocity: [0.3, 1, -0.2, 0.4, 0.1, 2],
+    });
     const I = Float64Array.from(body.inertia);
     const L = Float64Array.from(body.L);
     const w = Float64Array.from(body.w);
     body.setMass(2);
-    close(body.inertia, Array.from(I, (x) => 2 * x), 1e-15);
-    close(body.L, Array.from(L, (x) => 2 * x), 1e-13);
+    close(
+      body.inertia,
+      Array.from(I, (x) => 2 * x),
+      1e-15,
+    );
+    close(
+      body.L,
+      Array.from(L, (x) => 2 * x),
+      1e-13,
+    );
     close(body.w, w, 0);
     expect(body.invMass).toBe(0.5);
     body.setMass(0);

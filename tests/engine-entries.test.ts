@@ -43,7 +43,14 @@ function run(E: typeof engine | typeof engine3): Float64Array[] {
   const world = new E.World({ dimensions: 3, gravity: [0, -9.81, 0] });
   world.addBody(new E.Body(D, { shape: E.HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
   for (let i = 0; i < 3; i += 1) {
-    world.addBody(new E.Body(D, { shape: E.HyperBox(D, [0.5, 0.4, 0.3]), mass: 1, position: [0.1 * i, 0.5 + 1.1 * i, 0], angularVelocity: [0.3, 0, 0.2] }));
+    world.addBody(
+      new E.Body(D, {
+        shape: E.HyperBox(D, [0.5, 0.4, 0.3]),
+        mass: 1,
+        position: [0.1 * i, 0.5 + 1.1 * i, 0],
+        angularVelocity: [0.3, 0, 0.2],
+      }),
+    );
   }
   for (let s = 0; s < 90; s += 1) world.step(1 / 60);
   return world.bodies.map((b) => Float64Array.from([...b.x, ...b.R, ...b.v, ...b.L]));
@@ -61,7 +68,9 @@ describe('the engine entries', () => {
       expect((engine3 as Record<string, unknown>)[name], name).toBe((engine as Record<string, unknown>)[name]);
       expect((internal as Record<string, unknown>)[name], name).toBe((engine as Record<string, unknown>)[name]);
     }
-    expect(Object.keys(internal)).toEqual(expect.arrayContaining(['collide', 'boxBoxSat', 'createBroadphase', 'mergeParams', 'ContactEvents']));
+    expect(Object.keys(internal)).toEqual(
+      expect.arrayContaining(['collide', 'boxBoxSat', 'createBroadphase', 'mergeParams', 'ContactEvents']),
+    );
   });
 
   it('the 3D entry steps bit-identically to the root entry', () => {

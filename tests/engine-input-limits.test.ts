@@ -175,7 +175,11 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
         ['position', vec(n, n - 1, up(LIM.maxPosition)), /option 'position'\[\d\] must be within ±1e12 m/],
         ['position', vec(n, 0, -1e308), /option 'position'\[0\]/],
         ['velocity', vec(n, 0, down(-LIM.maxVelocity)), /option 'velocity'\[0\] must be within ±1e8 m\/s/],
-        ['angularVelocity', vec(k, k - 1, up(LIM.maxAngularVelocity)), /option 'angularVelocity'\[\d\] must be within ±1e6 rad\/s/],
+        [
+          'angularVelocity',
+          vec(k, k - 1, up(LIM.maxAngularVelocity)),
+          /option 'angularVelocity'\[\d\] must be within ±1e6 rad\/s/,
+        ],
       ] as const) {
         expectRefused(() => make({ [option]: value }), message);
       }
@@ -186,28 +190,57 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
         make({ mass: 1, position: vec(n, 0, -LIM.maxPosition) }),
         make({ mass: 1, position: vec(n, 1, 6), velocity: vec(n, 0, LIM.maxVelocity) }),
         make({ mass: 1, position: vec(n, 1, 8), angularVelocity: vec(k, 0, -LIM.maxAngularVelocity) }),
-        make({ mass: LIM.minMass, position: vec(n, 1, 10), angularVelocity: new Array(k).fill(LIM.maxAngularVelocity), velocity: new Array(n).fill(-LIM.maxVelocity) }),
-        make({ type: 'kinematic', mass: LIM.maxMass, position: vec(n, 1, 12), velocity: vec(n, 0, LIM.maxVelocity), angularVelocity: vec(k, 0, LIM.maxAngularVelocity) }),
+        make({
+          mass: LIM.minMass,
+          position: vec(n, 1, 10),
+          angularVelocity: new Array(k).fill(LIM.maxAngularVelocity),
+          velocity: new Array(n).fill(-LIM.maxVelocity),
+        }),
+        make({
+          type: 'kinematic',
+          mass: LIM.maxMass,
+          position: vec(n, 1, 12),
+          velocity: vec(n, 0, LIM.maxVelocity),
+          angularVelocity: vec(k, 0, LIM.maxAngularVelocity),
+        }),
       ];
       tenStepsFinite(worldWith(n, ...bodies));
     });
 
     it(`n = ${n}: shape factories — box, ball, torus, half-space and convex mesh sizes`, () => {
       const one = new Array<number>(n).fill(1);
-      expectRefused(() => HyperBox(D, vec(n, 0, down(LIM.minLength), 1)), /HyperBox: argument 'halfExtents'\[0\] must be within \[1e-9, 1e9\] m/);
-      expectRefused(() => HyperBox(D, vec(n, n - 1, up(LIM.maxLength), 1)), /argument 'halfExtents'\[\d\] must be within \[1e-9, 1e9\] m/);
+      expectRefused(
+        () => HyperBox(D, vec(n, 0, down(LIM.minLength), 1)),
+        /HyperBox: argument 'halfExtents'\[0\] must be within \[1e-9, 1e9\] m/,
+      );
+      expectRefused(
+        () => HyperBox(D, vec(n, n - 1, up(LIM.maxLength), 1)),
+        /argument 'halfExtents'\[\d\] must be within \[1e-9, 1e9\] m/,
+      );
       expectRefused(() => HyperBox(D, vec(n, 0, 1e-300, 1)), /'halfExtents'\[0\]/);
       expectRefused(() => HyperBox(D, new Array(n).fill(1e200)), /'halfExtents'\[0\]/);
       expectRefused(() => HyperSphere(D, down(LIM.minLength)), /HyperSphere: argument 'radius' must be within \[1e-9, 1e9\] m/);
       expectRefused(() => HyperSphere(D, up(LIM.maxLength)), /argument 'radius'/);
-      expectRefused(() => HyperTorus(D, 1, down(LIM.minLength), 0), /HyperTorus: argument 'minorRadius' must be within \[1e-9, 1e9\] m/);
+      expectRefused(
+        () => HyperTorus(D, 1, down(LIM.minLength), 0),
+        /HyperTorus: argument 'minorRadius' must be within \[1e-9, 1e9\] m/,
+      );
       expectRefused(() => HyperTorus(D, up(LIM.maxLength), 1, 0), /HyperTorus: argument 'majorRadius' must be within/);
-      expectRefused(() => HalfSpace(D, vec(n, 1, 1), up(LIM.maxPosition)), /HalfSpace: argument 'offset' \/ \|normal\| must be within ±1e12 m/);
+      expectRefused(
+        () => HalfSpace(D, vec(n, 1, 1), up(LIM.maxPosition)),
+        /HalfSpace: argument 'offset' \/ \|normal\| must be within ±1e12 m/,
+      );
       expectRefused(() => HalfSpace(D, vec(n, 1, 1e-300), 1), /HalfSpace: argument 'offset' \/ \|normal\|/);
       expectRefused(() => crossPolytope(D, down(LIM.minLength)), /ConvexMesh: the mesh's size .* must be within \[1e-9, 1e9\] m/);
       expectRefused(() => crossPolytope(D, up(LIM.maxLength)), /ConvexMesh: the mesh's size/);
-      expectRefused(() => crossPolytope(D, 1, vec(n, 0, LIM.maxPosition)), /ConvexMesh: 'vertices'\[0\] coordinate 0 must be within ±1e12 m/);
-      expectRefused(() => box(D).massProperties(D, down(LIM.minMass)), /HyperBox\.massProperties: argument 'mass' must be within \[1e-12, 1e12\] kg/);
+      expectRefused(
+        () => crossPolytope(D, 1, vec(n, 0, LIM.maxPosition)),
+        /ConvexMesh: 'vertices'\[0\] coordinate 0 must be within ±1e12 m/,
+      );
+      expectRefused(
+        () => box(D).massProperties(D, down(LIM.minMass)),
+        /HyperBox\.massProperties: argument 'mass' must be within \[1e-12, 1e12\] kg/,
+      );
       expectRefused(() => HyperSphere(D, 1).massProperties(D, up(LIM.maxMass)), /argument 'mass'/);
       void one;
 
@@ -226,7 +259,8 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
       // every shape at a size bound, with the smallest and the largest mass: inertia within its bounds, and it steps
       for (const mass of [LIM.minMass, 1, LIM.maxMass]) {
         const bodies = shapes.map(
-          (shape, i) => new Body(D, { shape, mass, position: vec(n, 1, 3 * LIM.maxLength * (i + 1)), angularVelocity: vec(k, 0, 1) }),
+          (shape, i) =>
+            new Body(D, { shape, mass, position: vec(n, 1, 3 * LIM.maxLength * (i + 1)), angularVelocity: vec(k, 0, 1) }),
         );
         for (const b of bodies) {
           for (const I of b.inertia) {
@@ -240,9 +274,28 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
 
     it(`n = ${n}: a shape whose inertia would leave the bounds is refused by new Body and setMass`, () => {
       // a shape-like object with a custom massProperties (any object with kind and massProperties is accepted)
-      const tiny = { kind: 'mesh', n, massProperties: (_: Dims, m: number) => ({ volume: 1, covariance: new Float64Array(n), inertia: new Float64Array(k).fill(m * 1e-300) }) };
-      const huge = { kind: 'mesh', n, massProperties: (_: Dims, m: number) => ({ volume: 1, covariance: new Float64Array(n), inertia: new Float64Array(k).fill(m * 1e300) }) };
-      expectRefused(() => new Body(D, { shape: tiny as never, mass: 1 }), /option 'shape' with option 'mass' gives principal inertia\[0\] = 1e-300 .* outside \[1e-40, 1e40\]/);
+      const tiny = {
+        kind: 'mesh',
+        n,
+        massProperties: (_: Dims, m: number) => ({
+          volume: 1,
+          covariance: new Float64Array(n),
+          inertia: new Float64Array(k).fill(m * 1e-300),
+        }),
+      };
+      const huge = {
+        kind: 'mesh',
+        n,
+        massProperties: (_: Dims, m: number) => ({
+          volume: 1,
+          covariance: new Float64Array(n),
+          inertia: new Float64Array(k).fill(m * 1e300),
+        }),
+      };
+      expectRefused(
+        () => new Body(D, { shape: tiny as never, mass: 1 }),
+        /option 'shape' with option 'mass' gives principal inertia\[0\] = 1e-300 .* outside \[1e-40, 1e40\]/,
+      );
       expectRefused(() => new Body(D, { shape: huge as never, mass: 1 }), /principal inertia\[0\] = 1e\+300/);
       const body = new Body(D, { shape: tiny as never, mass: 0 });
       const before = bodyBits(body);
@@ -260,26 +313,59 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
       const cases: [() => unknown, RegExp][] = [
         [() => body.setPositionN(vec(n, 0, up(LIM.maxPosition))), /Body\.setPositionN: argument 'p'\[0\] must be within ±1e12 m/],
         [() => body.setPositionN(vec(n, n - 1, -1e308)), /argument 'p'\[\d\]/],
-        [() => body.setLinearVelocity(vec(n, 0, up(LIM.maxVelocity))), /Body\.setLinearVelocity: argument 'v'\[0\] must be within ±1e8 m\/s/],
+        [
+          () => body.setLinearVelocity(vec(n, 0, up(LIM.maxVelocity))),
+          /Body\.setLinearVelocity: argument 'v'\[0\] must be within ±1e8 m\/s/,
+        ],
         [() => body.setLinearVelocity(vec(n, 0, 1e308)), /argument 'v'\[0\]/],
-        [() => body.setAngularVelocity(vec(k, 0, down(-LIM.maxAngularVelocity))), /Body\.setAngularVelocity: argument 'w'\[0\] must be within ±1e6 rad\/s/],
+        [
+          () => body.setAngularVelocity(vec(k, 0, down(-LIM.maxAngularVelocity))),
+          /Body\.setAngularVelocity: argument 'w'\[0\] must be within ±1e6 rad\/s/,
+        ],
         [() => body.setMass(down(LIM.minMass)), /Body\.setMass: argument 'm' must be 0 \(static\) or within \[1e-12, 1e12\] kg/],
         [() => body.setMass(1e-300), /argument 'm'/],
         [() => body.setMass(up(LIM.maxMass)), /argument 'm'/],
-        [() => body.applyCentralImpulse(vec(n, 0, up(LIM.maxImpulse))), /Body\.applyCentralImpulse: argument 'j'\[0\] must be within ±1e20 N·s/],
-        [() => body.applyCentralImpulse(vec(n, 0, 1e9)), /argument 'j' would make body \d+ \('probe'\)'s velocity\[0\] .*beyond ±1e8 m\/s/],
+        [
+          () => body.applyCentralImpulse(vec(n, 0, up(LIM.maxImpulse))),
+          /Body\.applyCentralImpulse: argument 'j'\[0\] must be within ±1e20 N·s/,
+        ],
+        [
+          () => body.applyCentralImpulse(vec(n, 0, 1e9)),
+          /argument 'j' would make body \d+ \('probe'\)'s velocity\[0\] .*beyond ±1e8 m\/s/,
+        ],
         [() => body.applyImpulse(vec(n, 0, up(LIM.maxImpulse)), r1), /Body\.applyImpulse: argument 'j'\[0\]/],
-        [() => body.applyImpulse(vec(n, 1, 1), vec(n, 0, up(LIM.maxPosition))), /Body\.applyImpulse: argument 'r'\[0\] must be within ±1e12 m/],
-        [() => body.applyImpulse(vec(n, 1, 1e7), vec(n, 0, 1)), /arguments 'j' and 'r' would make .*angular velocity\[0\] .*beyond ±1e6 rad\/s/],
-        [() => body.applyCentralForce(vec(n, 0, up(LIM.maxForce))), /Body\.applyCentralForce: argument 'f'\[0\] must be within ±1e20 N/],
+        [
+          () => body.applyImpulse(vec(n, 1, 1), vec(n, 0, up(LIM.maxPosition))),
+          /Body\.applyImpulse: argument 'r'\[0\] must be within ±1e12 m/,
+        ],
+        [
+          () => body.applyImpulse(vec(n, 1, 1e7), vec(n, 0, 1)),
+          /arguments 'j' and 'r' would make .*angular velocity\[0\] .*beyond ±1e6 rad\/s/,
+        ],
+        [
+          () => body.applyCentralForce(vec(n, 0, up(LIM.maxForce))),
+          /Body\.applyCentralForce: argument 'f'\[0\] must be within ±1e20 N/,
+        ],
         [() => body.applyForce(vec(n, 0, up(LIM.maxForce)), r1), /Body\.applyForce: argument 'f'\[0\]/],
         [() => body.applyForce(vec(n, 1, 1), vec(n, 0, up(LIM.maxPosition))), /Body\.applyForce: argument 'r'\[0\]/],
-        [() => body.applyTorque(vec(k, k - 1, up(LIM.maxTorque))), /Body\.applyTorque: argument 't'\[\d\] must be within ±1e32 N·m/],
+        [
+          () => body.applyTorque(vec(k, k - 1, up(LIM.maxTorque))),
+          /Body\.applyTorque: argument 't'\[\d\] must be within ±1e32 N·m/,
+        ],
         // a mass of 1: a force above 1e12 N gives more than the largest acceleration
-        [() => body.applyCentralForce(vec(n, 0, up(LIM.maxAcceleration))), /Body\.applyCentralForce: argument 'f' would give body \d+ \('probe'\) an acceleration\[0\] .* beyond ±1e12 m\/s²/],
-        [() => body.applyForce(vec(n, n - 1, -up(LIM.maxAcceleration)), r1), /Body\.applyForce: argument 'f' would give .*acceleration\[\d\]/],
+        [
+          () => body.applyCentralForce(vec(n, 0, up(LIM.maxAcceleration))),
+          /Body\.applyCentralForce: argument 'f' would give body \d+ \('probe'\) an acceleration\[0\] .* beyond ±1e12 m\/s²/,
+        ],
+        [
+          () => body.applyForce(vec(n, n - 1, -up(LIM.maxAcceleration)), r1),
+          /Body\.applyForce: argument 'f' would give .*acceleration\[\d\]/,
+        ],
         // inertia 1/6: a torque of 2e11 N·m gives 1.2e12 rad/s²
-        [() => body.applyTorque(vec(k, 0, 2e11)), /Body\.applyTorque: argument 't' would give .*an angular acceleration \(I⁻¹ τ\) of 1\.2\d*e12 rad\/s², beyond ±1e12 rad\/s²/],
+        [
+          () => body.applyTorque(vec(k, 0, 2e11)),
+          /Body\.applyTorque: argument 't' would give .*an angular acceleration \(I⁻¹ τ\) of 1\.2\d*e12 rad\/s², beyond ±1e12 rad\/s²/,
+        ],
         [() => body.applyForce(vec(n, 1, 2e11), vec(n, 0, 1)), /arguments 'f' and 'r' would give .*angular acceleration/],
       ];
       for (const [call, message] of cases) {
@@ -294,13 +380,19 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
       expectRefused(() => body.applyCentralForce(vec(n, 0, 1e-3)), /argument 'f' would give .*acceleration\[0\]/);
       heavy.applyCentralForce(vec(n, 0, LIM.maxForce));
       const before = worldBytes(world);
-      expectRefused(() => heavy.applyCentralForce(vec(n, 0, 1e5)), /argument 'f' would make body \d+ \('heavy'\)'s force\[0\] .*beyond ±1e20 N/);
+      expectRefused(
+        () => heavy.applyCentralForce(vec(n, 0, 1e5)),
+        /argument 'f' would make body \d+ \('heavy'\)'s force\[0\] .*beyond ±1e20 N/,
+      );
       expect(worldBytes(world)).toBe(before);
       // r ∧ f = 1e12 · 1e20: the torque at its bound, then any more in the same sense is refused
       heavy.applyForce(vec(n, 1, LIM.maxForce), vec(n, 0, LIM.maxPosition));
       expect(heavy.torque[0]).toBe(LIM.maxTorque);
       const withTorque = worldBytes(world);
-      expectRefused(() => heavy.applyForce(vec(n, 1, -1e17), vec(n, 0, -1)), /arguments 'f' and 'r' would make .*torque\[0\] .*beyond ±1e32 N·m/);
+      expectRefused(
+        () => heavy.applyForce(vec(n, 1, -1e17), vec(n, 0, -1)),
+        /arguments 'f' and 'r' would make .*torque\[0\] .*beyond ±1e32 N·m/,
+      );
       expectRefused(() => heavy.applyTorque(vec(k, 0, 1e17)), /argument 't' would make .*torque\[0\] .*beyond ±1e32 N·m/);
       expect(worldBytes(world)).toBe(withTorque);
       tenStepsFinite(world);
@@ -337,25 +429,48 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
       const zero = new Array<number>(n).fill(0);
       const before = worldBytes(world);
       const cases: [() => unknown, RegExp][] = [
-        [() => new PointJoint(a, b, vec(n, 0, up(LIM.maxPosition)), zero), /new PointJoint: argument 'localA'\[0\] must be within ±1e12 m/],
+        [
+          () => new PointJoint(a, b, vec(n, 0, up(LIM.maxPosition)), zero),
+          /new PointJoint: argument 'localA'\[0\] must be within ±1e12 m/,
+        ],
         [() => new PointJoint(a, null, zero, vec(n, 0, -1e300)), /argument 'localB'\[0\]/],
-        [() => new PointJoint(a, b, zero, zero, { hertz: up(LIM.maxJointStiffness) }), /argument 'opts\.hertz' must be within ±1e12 Hz/],
+        [
+          () => new PointJoint(a, b, zero, zero, { hertz: up(LIM.maxJointStiffness) }),
+          /argument 'opts\.hertz' must be within ±1e12 Hz/,
+        ],
         [() => new PointJoint(a, b, zero, zero, { hertz: 5, damping: 1e300 }), /argument 'opts\.damping' must be within ±1e12/],
-        [() => new DistanceJoint(a, b, zero, zero, { rest: up(LIM.maxPosition) }), /argument 'opts\.rest' must be within ±1e12 m/],
-        [() => new HingeJoint(a, b, zero, zero, { plane: 0, motorSpeed: up(LIM.maxAngularVelocity), maxMotorTorque: 1 }), /argument 'opts\.motorSpeed' must be within ±1e6 rad\/s/],
-        [() => new HingeJoint(a, b, zero, zero, { plane: 0, motorSpeed: 1, maxMotorTorque: up(LIM.maxTorque) }), /argument 'opts\.maxMotorTorque' must be within ±1e32 N·m/],
+        [
+          () => new DistanceJoint(a, b, zero, zero, { rest: up(LIM.maxPosition) }),
+          /argument 'opts\.rest' must be within ±1e12 m/,
+        ],
+        [
+          () => new HingeJoint(a, b, zero, zero, { plane: 0, motorSpeed: up(LIM.maxAngularVelocity), maxMotorTorque: 1 }),
+          /argument 'opts\.motorSpeed' must be within ±1e6 rad\/s/,
+        ],
+        [
+          () => new HingeJoint(a, b, zero, zero, { plane: 0, motorSpeed: 1, maxMotorTorque: up(LIM.maxTorque) }),
+          /argument 'opts\.maxMotorTorque' must be within ±1e32 N·m/,
+        ],
       ];
       for (const [call, message] of cases) {
         expectRefused(call, message);
         expect(worldBytes(world), message.source).toBe(before);
       }
-      const hinge = world.addConstraint(new HingeJoint(a, b, vec(n, 1, 1), vec(n, 1, -1), { plane: 0, motorSpeed: 1, maxMotorTorque: 1 }));
+      const hinge = world.addConstraint(
+        new HingeJoint(a, b, vec(n, 1, 1), vec(n, 1, -1), { plane: 0, motorSpeed: 1, maxMotorTorque: 1 }),
+      );
       const point = world.addConstraint(new PointJoint(a, null, zero, vec(n, 1, 2)));
       const live = worldBytes(world);
-      expectRefused(() => hinge.setMotor(-up(LIM.maxAngularVelocity), 1), /HingeJoint\.setMotor: argument 'speed' must be within ±1e6 rad\/s/);
+      expectRefused(
+        () => hinge.setMotor(-up(LIM.maxAngularVelocity), 1),
+        /HingeJoint\.setMotor: argument 'speed' must be within ±1e6 rad\/s/,
+      );
       expectRefused(() => hinge.setMotor(1, up(LIM.maxTorque)), /argument 'maxTorque' must be within ±1e32 N·m/);
       expectRefused(() => point.setSoftness(up(LIM.maxJointStiffness), 1), /PointJoint\.setSoftness: argument 'hertz'/);
-      expectRefused(() => point.setAnchors(vec(n, 0, up(LIM.maxPosition)), null), /PointJoint\.setAnchors: argument 'localA'\[0\]/);
+      expectRefused(
+        () => point.setAnchors(vec(n, 0, up(LIM.maxPosition)), null),
+        /PointJoint\.setAnchors: argument 'localA'\[0\]/,
+      );
       expect(worldBytes(world)).toBe(live);
       // at the bounds: accepted, and a world holding each one steps finite
       hinge.setMotor(LIM.maxAngularVelocity, LIM.maxTorque);
@@ -364,7 +479,12 @@ describe('each entry: at the bound accepted and stepped finite; just beyond refu
       const pivot = vec(n, 0, LIM.maxPosition);
       pivot[1] = 2;
       const joints: ((p: Body, q: Body) => Joint)[] = [
-        (p, q) => new HingeJoint(p, q, vec(n, 1, 1), vec(n, 1, -1), { plane: 0, motorSpeed: -LIM.maxAngularVelocity, maxMotorTorque: LIM.maxTorque }),
+        (p, q) =>
+          new HingeJoint(p, q, vec(n, 1, 1), vec(n, 1, -1), {
+            plane: 0,
+            motorSpeed: -LIM.maxAngularVelocity,
+            maxMotorTorque: LIM.maxTorque,
+          }),
         (p) => new PointJoint(p, null, zero, vec(n, 1, 2), { hertz: LIM.maxJointStiffness, damping: LIM.maxJointStiffness }),
         (p) => new DistanceJoint(p, null, zero, vec(n, 1, 8), { rest: LIM.maxPosition }),
         (p, q) => new DistanceJoint(p, q, vec(n, 0, -LIM.maxPosition), vec(n, 0, LIM.maxPosition)),
@@ -395,9 +515,37 @@ function rng(seed: number): () => number {
 }
 
 const MAGNITUDES = [
-  0, 1e-300, 1e-40, 1e-13, LIM.minMass, LIM.minLength, 1e-6, 1e-3, 0.5, 1, 10, 1000, 1e6, LIM.maxVelocity, up(LIM.maxVelocity),
-  LIM.maxLength, LIM.maxMass, LIM.maxPosition, up(LIM.maxPosition), 1e15, LIM.maxForce, up(LIM.maxForce), 1e25, LIM.maxTorque,
-  up(LIM.maxTorque), 1e40, 1e100, 1e200, 1e300, 1e308, Number.MAX_VALUE,
+  0,
+  1e-300,
+  1e-40,
+  1e-13,
+  LIM.minMass,
+  LIM.minLength,
+  1e-6,
+  1e-3,
+  0.5,
+  1,
+  10,
+  1000,
+  1e6,
+  LIM.maxVelocity,
+  up(LIM.maxVelocity),
+  LIM.maxLength,
+  LIM.maxMass,
+  LIM.maxPosition,
+  up(LIM.maxPosition),
+  1e15,
+  LIM.maxForce,
+  up(LIM.maxForce),
+  1e25,
+  LIM.maxTorque,
+  up(LIM.maxTorque),
+  1e40,
+  1e100,
+  1e200,
+  1e300,
+  1e308,
+  Number.MAX_VALUE,
 ];
 
 describe('seeded fuzzing: 2,000 calls with extreme values either throw before changing anything or keep the world finite', () => {
@@ -428,7 +576,14 @@ describe('seeded fuzzing: 2,000 calls with extreme values either throw before ch
       const addBody = (): void => {
         const shape = pick(shapes)();
         world.addBody(
-          new Body(D, { shape, mass: Math.abs(extreme()), position: list(n), velocity: list(n), angularVelocity: list(k), type: random() < 0.1 ? 'kinematic' : 'dynamic' }),
+          new Body(D, {
+            shape,
+            mass: Math.abs(extreme()),
+            position: list(n),
+            velocity: list(n),
+            angularVelocity: list(k),
+            type: random() < 0.1 ? 'kinematic' : 'dynamic',
+          }),
         );
       };
       const fresh = (): void => {
@@ -474,7 +629,9 @@ describe('seeded fuzzing: 2,000 calls with extreme values either throw before ch
         try {
           for (let s = 0; s < 3; s += 1) world.step(1 / 60);
         } catch (e) {
-          throw new Error(`call ${c} (${calls.indexOf(call)}) on ${body.label} (m ${body.mass}, I ${[...body.inertia]}, v ${[...body.v]}, w ${[...body.w]}, f ${[...body.force]}, t ${[...body.torque]}): ${String(e)}`);
+          throw new Error(
+            `call ${c} (${calls.indexOf(call)}) on ${body.label} (m ${body.mass}, I ${[...body.inertia]}, v ${[...body.v]}, w ${[...body.w]}, f ${[...body.force]}, t ${[...body.torque]}): ${String(e)}`,
+          );
         }
         expectFinite(world);
       }

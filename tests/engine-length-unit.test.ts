@@ -13,9 +13,24 @@ function scene(n: number, s: number, lengthUnit: number, gravity = 9.81 * s): Wo
   const D = dims(n);
   const at = (y: number, x = 0): number[] => Array.from({ length: n }, (_, i) => (i === 1 ? y : i === 0 ? x : 0) * s);
   const world = new World({ dimensions: n, gravity: at(-gravity / s), params: { lengthUnit } });
-  world.addBody(new Body(D, { shape: HalfSpace(D, at(1).map((v) => v / s), 0), mass: 0 }));
+  world.addBody(
+    new Body(D, {
+      shape: HalfSpace(
+        D,
+        at(1).map((v) => v / s),
+        0,
+      ),
+      mass: 0,
+    }),
+  );
   for (let i = 0; i < 5; i += 1) {
-    world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.5 * s)), mass: 1, position: at(0.5 + 1.001 * i, 0.02 * (i % 2)) }));
+    world.addBody(
+      new Body(D, {
+        shape: HyperBox(D, new Array<number>(n).fill(0.5 * s)),
+        mass: 1,
+        position: at(0.5 + 1.001 * i, 0.02 * (i % 2)),
+      }),
+    );
   }
   world.addBody(new Body(D, { shape: HyperSphere(D, 0.3 * s), mass: 0.5, position: at(3, -4), velocity: at(1, 6) }));
   return world;

@@ -48,12 +48,20 @@ const numbers = (s: string) => (s.match(/-?\d+(?:\.\d+)?(?:e[-+]?\d+)?/g) ?? [])
 
 /** Same printed shape (text without the numbers) and the same numbers to 1e-12 relative. */
 function expectSameOutput(actual: string, documented: string, what: string): void {
-  const shape = (s: string) => s.replace(/-?\d+(?:\.\d+)?(?:e[-+]?\d+)?/g, '#').replace(/\s+/g, ' ').trim();
+  const shape = (s: string) =>
+    s
+      .replace(/-?\d+(?:\.\d+)?(?:e[-+]?\d+)?/g, '#')
+      .replace(/\s+/g, ' ')
+      .trim();
   expect(shape(actual), `${what}: printed shape`).toBe(shape(documented));
   const a = numbers(actual);
   const d = numbers(documented);
   expect(a.length, `${what}: count of numbers`).toBe(d.length);
-  a.forEach((x, i) => expect(Math.abs(x - d[i]!), `${what}: number ${i} (${x} vs ${d[i]})`).toBeLessThanOrEqual(1e-12 * Math.max(1, Math.abs(d[i]!))));
+  a.forEach((x, i) =>
+    expect(Math.abs(x - d[i]!), `${what}: number ${i} (${x} vs ${d[i]})`).toBeLessThanOrEqual(
+      1e-12 * Math.max(1, Math.abs(d[i]!)),
+    ),
+  );
 }
 
 describe('the documented Node examples run on the built packages and print what the docs say', () => {

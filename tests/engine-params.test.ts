@@ -133,7 +133,14 @@ describe('validateParams', () => {
 
   it('accepts boundary values: 0 where allowed, biasFactor 1, constraintHertzRatio 1', () => {
     expect(() =>
-      validateParams({ shockIterations: 0, penetrationSlop: 0, biasFactor: 1, constraintHertzRatio: 1, rotorTolerance: 0, gyroscopicIterations: 0 }),
+      validateParams({
+        shockIterations: 0,
+        penetrationSlop: 0,
+        biasFactor: 1,
+        constraintHertzRatio: 1,
+        rotorTolerance: 0,
+        gyroscopicIterations: 0,
+      }),
     ).not.toThrow();
   });
 

@@ -1,13 +1,6 @@
 import { dims } from '@physin/algebra';
 import { describe, expect, it } from 'vitest';
-import {
-  ballVolume,
-  gammaHalfInteger,
-  HalfSpace,
-  HyperBox,
-  HyperSphere,
-  HyperTorus,
-} from '@physin/engine/internal';
+import { ballVolume, gammaHalfInteger, HalfSpace, HyperBox, HyperSphere, HyperTorus } from '@physin/engine/internal';
 import { seeded, uniform } from './support/random.js';
 
 /** |a − b| <= tol · max(|a|, |b|, tiny). */
@@ -121,7 +114,11 @@ describe('HyperBox', () => {
       expect(Array.from(box.halfExtents)).toEqual(a);
       expect(Object.isFrozen(box)).toBe(true);
       const mp = box.massProperties(D, m);
-      expectRel(mp.volume, a.reduce((v, x) => v * 2 * x, 1), 1e-14);
+      expectRel(
+        mp.volume,
+        a.reduce((v, x) => v * 2 * x, 1),
+        1e-14,
+      );
       for (let i = 0; i < n; i += 1) expectRel(mp.covariance[i], (m * a[i] * a[i]) / 3, 1e-14);
       for (let p = 0; p < D.k; p += 1) {
         const i = D.planeI[p];

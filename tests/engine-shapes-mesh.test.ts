@@ -1,11 +1,6 @@
 import { determinant, dims, rotorToMatrix } from '@physin/algebra';
 import { describe, expect, it } from 'vitest';
-import {
-  closedMeshMassProperties,
-  ConvexMesh,
-  HyperBox,
-  simplexMassProperties,
-} from '@physin/engine/internal';
+import { closedMeshMassProperties, ConvexMesh, HyperBox, simplexMassProperties } from '@physin/engine/internal';
 import type { ConvexMeshShape } from '@physin/engine/internal';
 import { cubeBoundary } from './support/meshes.js';
 import type { TestMesh } from './support/meshes.js';
@@ -14,12 +9,10 @@ import { seeded, uniform } from './support/random.js';
 // ---------------------------------------------------------------------------------------------
 // Meshes built by the tests (independent of the library)
 
-
 function expectRel(actual: number, expected: number, tol: number): void {
   const scale = Math.max(Math.abs(actual), Math.abs(expected), 1e-300);
   expect(Math.abs(actual - expected) / scale).toBeLessThanOrEqual(tol);
 }
-
 
 function factorial(n: number): number {
   return n <= 1 ? 1 : n * factorial(n - 1);
@@ -36,12 +29,15 @@ function coneDeterminant(n: number, points: number[][], p: number[]): number {
 function orientOutward(mesh: TestMesh, inside: number[]): TestMesh {
   const n = inside.length;
   const facets = mesh.facets.map((f) => {
-    const det = coneDeterminant(n, f.map((i) => mesh.vertices[i]), inside);
+    const det = coneDeterminant(
+      n,
+      f.map((i) => mesh.vertices[i]),
+      inside,
+    );
     return det > 0 ? f.slice() : [f[1], f[0], ...f.slice(2)];
   });
   return { vertices: mesh.vertices, facets };
 }
-
 
 /** The cross polytope |x|₁ <= 1: vertices ±e_i (index 2i for +, 2i+1 for −), one facet per orthant. */
 function crossPolytope(n: number): TestMesh {
@@ -305,7 +301,8 @@ describe('cross polytope (identity 13) and simplex', () => {
         expectRel(res.mass, volume, 1e-12);
         for (let c = 0; c < n; c += 1) expect(Math.abs(res.centroid[c] - g[c])).toBeLessThanOrEqual(1e-12);
         for (let r = 0; r < n; r += 1) {
-          for (let c = 0; c < n; c += 1) expect(Math.abs(res.covariance[r * n + c] - aboutCentroid(r, c))).toBeLessThanOrEqual(1e-12 * volume);
+          for (let c = 0; c < n; c += 1)
+            expect(Math.abs(res.covariance[r * n + c] - aboutCentroid(r, c))).toBeLessThanOrEqual(1e-12 * volume);
         }
       }
       expectRel(Math.abs(sx.signedVolume), volume, 1e-12);
@@ -315,7 +312,11 @@ describe('cross polytope (identity 13) and simplex', () => {
       let traceExpected = 0;
       for (let c = 0; c < n; c += 1) traceExpected += aboutCentroid(c, c) / volume;
       const mp = mesh.massProperties(D, 1);
-      expectRel(mp.covariance.reduce((p, q) => p + q, 0), traceExpected, 1e-12);
+      expectRel(
+        mp.covariance.reduce((p, q) => p + q, 0),
+        traceExpected,
+        1e-12,
+      );
       expectPrincipalFrame(mesh, 1e-12);
       expectFrameMapsBack(mesh, v, 1e-12 * 3);
     }
@@ -351,7 +352,10 @@ describe('cross polytope (identity 13) and simplex', () => {
 
   it('a regular hexagon (n = 2): area (3√3/2)ρ² and C_ii = m·5ρ²/24 (1e-13)', () => {
     const rho = 1.2;
-    const vertices = Array.from({ length: 6 }, (_, i) => [rho * Math.cos((i * Math.PI) / 3) + 5, rho * Math.sin((i * Math.PI) / 3)]);
+    const vertices = Array.from({ length: 6 }, (_, i) => [
+      rho * Math.cos((i * Math.PI) / 3) + 5,
+      rho * Math.sin((i * Math.PI) / 3),
+    ]);
     const facets = Array.from({ length: 6 }, (_, i) => [i, (i + 1) % 6]);
     const mesh = ConvexMesh(dims(2), vertices, facets);
     const mp = mesh.massProperties(dims(2), 1);
@@ -398,7 +402,9 @@ describe('refusals: nothing is built from a bad mesh', () => {
     expect(() => ConvexMesh(D3, cube.vertices, [...cube.facets, cube.facets[0]])).toThrow(/more than 2 facets/);
     const t = cubeBoundary(4, [1, 1, 1, 1]);
     expect(() => ConvexMesh(dims(4), t.vertices, t.facets.slice(0, -1))).toThrow(/not closed/);
-    expect(() => closedMeshMassProperties(3, cube.vertices, orientOutward(cube, [0, 0, 0]).facets.slice(2))).toThrow(/not closed/);
+    expect(() => closedMeshMassProperties(3, cube.vertices, orientOutward(cube, [0, 0, 0]).facets.slice(2))).toThrow(
+      /not closed/,
+    );
   });
 
   it('closedMeshMassProperties refuses inconsistently oriented facets', () => {
@@ -413,31 +419,68 @@ describe('refusals: nothing is built from a bad mesh', () => {
   it('degenerate facets, indices out of range, bad types and lengths', () => {
     const v = cube.vertices;
     expect(() => ConvexMesh(D3, v, [[0, 0, 1], ...cube.facets.slice(1)])).toThrow(/'facets'\[0\] repeats vertex 0/);
-    expect(() => ConvexMesh(D3, v, [[0, 1, 8], ...cube.facets.slice(1)])).toThrow(/'facets'\[0\]\[2\] must be a vertex index in \[0, 7\]/);
+    expect(() => ConvexMesh(D3, v, [[0, 1, 8], ...cube.facets.slice(1)])).toThrow(
+      /'facets'\[0\]\[2\] must be a vertex index in \[0, 7\]/,
+    );
     expect(() => ConvexMesh(D3, v, [[0, 1, 2.5], ...cube.facets.slice(1)])).toThrow(RangeError);
     expect(() => ConvexMesh(D3, v, [[0, 1], ...cube.facets.slice(1)])).toThrow(TypeError);
-    expect(() => ConvexMesh(D3, [[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])).toThrow(/at least 4 points/);
+    expect(() =>
+      ConvexMesh(
+        D3,
+        [
+          [0, 0, 0],
+          [1, 0, 0],
+          [0, 1, 0],
+        ],
+        [[0, 1, 2]],
+      ),
+    ).toThrow(/at least 4 points/);
     const nan = v.map((p) => p.slice());
     nan[2][1] = Number.NaN;
     expect(() => ConvexMesh(D3, nan, cube.facets)).toThrow(/'vertices'\[2\]\[1\] must be finite/);
-    expect(() => ConvexMesh(D3, v.map((p) => p.slice(0, 2)), cube.facets)).toThrow(TypeError);
+    expect(() =>
+      ConvexMesh(
+        D3,
+        v.map((p) => p.slice(0, 2)),
+        cube.facets,
+      ),
+    ).toThrow(TypeError);
     expect(() => ConvexMesh(D3, [1, 2, 3, 4], cube.facets)).toThrow(/multiple of 3/);
     expect(() => ConvexMesh(D3, 'mesh', cube.facets)).toThrow(TypeError);
     expect(() => ConvexMesh({} as never, v, cube.facets)).toThrow(TypeError);
     expect(() => ConvexMesh(D3, v, cube.facets, { tolerance: 0 })).toThrow(/'options.tolerance' must be > 0/);
     // a degenerate (zero-area) triangle: three collinear points in a closed mesh
-    const line = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [0, 0, 1]];
+    const line = [
+      [0, 0, 0],
+      [1, 0, 0],
+      [2, 0, 0],
+      [0, 1, 0],
+      [0, 0, 1],
+    ];
     expect(() =>
-      ConvexMesh(D3, line, [[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3], [0, 1, 4], [1, 2, 4], [0, 2, 4]]),
+      ConvexMesh(D3, line, [
+        [0, 1, 2],
+        [0, 1, 3],
+        [1, 2, 3],
+        [0, 2, 3],
+        [0, 1, 4],
+        [1, 2, 4],
+        [0, 2, 4],
+      ]),
     ).toThrow(/degenerate/);
     // flat: four coplanar points with a tetrahedron's connectivity
-    const flat = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]];
+    const flat = [
+      [0, 0, 0],
+      [1, 0, 0],
+      [0, 1, 0],
+      [1, 1, 0],
+    ];
     expect(() => ConvexMesh(D3, flat, simplexFacets(3))).toThrow(/flat/);
     // a vertex used by no facet
     expect(() => ConvexMesh(D3, [...v, [0, 0, 0]], cube.facets)).toThrow(/'vertices'\[8\] is used by no facet/);
   });
 
-  it('the caller\'s arrays are copied, not changed (facets are re-oriented in the copy)', () => {
+  it("the caller's arrays are copied, not changed (facets are re-oriented in the copy)", () => {
     const facets = cube.facets.map((f) => f.slice());
     const flat = new Int32Array(facets.flat());
     const before = Array.from(flat);
@@ -454,13 +497,23 @@ describe('ConvexMesh.fromTriangles (three.js triangle lists)', () => {
     const positions: number[] = [];
     const index: number[] = [];
     const faces: [number, number, number][] = [
-      [0, 1, 2], [0, 1, 2], [1, 2, 0], [1, 2, 0], [2, 0, 1], [2, 0, 1],
+      [0, 1, 2],
+      [0, 1, 2],
+      [1, 2, 0],
+      [1, 2, 0],
+      [2, 0, 1],
+      [2, 0, 1],
     ];
     const half = [w / 2, h / 2, d / 2];
     faces.forEach(([u, v, axis], f) => {
       const sign = f % 2 === 0 ? 1 : -1;
       const base = positions.length / 3;
-      for (const [su, sv] of [[-1, 1], [1, 1], [-1, -1], [1, -1]]) {
+      for (const [su, sv] of [
+        [-1, 1],
+        [1, 1],
+        [-1, -1],
+        [1, -1],
+      ]) {
         const p = [0, 0, 0];
         p[u] = su * half[u];
         p[v] = sv * half[v];

@@ -46,7 +46,11 @@ function sphere2(s: number): Sphere {
   for (const sx of [1, -1]) {
     for (const sy of [1, -1]) {
       for (const sz of [1, -1]) {
-        const [A, B, C] = [[sx, 0, 0], [0, sy, 0], [0, 0, sz]];
+        const [A, B, C] = [
+          [sx, 0, 0],
+          [0, sy, 0],
+          [0, 0, sz],
+        ];
         const at = (u: number, v: number): number => {
           const w = s - u - v;
           return pointAt([0, 1, 2].map((c) => (w * A[c] + u * B[c] + v * C[c]) / s));
@@ -93,10 +97,7 @@ function torusMesh(n: number, R: number, r: number, pi: number, pj: number, M: n
     for (const simplex of S.simplices) {
       // staircase: (s0, b_0..b_t), (s1, b_t..b_m)
       for (let t = 0; t < simplex.length; t += 1) {
-        const f = [
-          ...simplex.slice(0, t + 1).map((b) => s0 * P + b),
-          ...simplex.slice(t).map((b) => s1 * P + b),
-        ];
+        const f = [...simplex.slice(0, t + 1).map((b) => s0 * P + b), ...simplex.slice(t).map((b) => s1 * P + b)];
         // outward: positive cone from the nearest point of the core circle
         const centre = new Array<number>(n).fill(0);
         for (const i of f) for (let c = 0; c < n; c += 1) centre[c] += vertices[i][c] / n;
@@ -104,7 +105,11 @@ function torusMesh(n: number, R: number, r: number, pi: number, pj: number, M: n
         const core = new Array<number>(n).fill(0);
         core[pi] = (R * centre[pi]) / rho;
         core[pj] = (R * centre[pj]) / rho;
-        const det = coneDeterminant(n, f.map((i) => vertices[i]), core);
+        const det = coneDeterminant(
+          n,
+          f.map((i) => vertices[i]),
+          core,
+        );
         facets.push(det > 0 ? f : [f[1], f[0], ...f.slice(2)]);
       }
     }
@@ -124,7 +129,8 @@ function errors(n: number, M: number, S: Sphere, R: number, r: number, pi: numbe
   let centroid = 0;
   for (let a = 0; a < n; a += 1) {
     centroid = Math.max(centroid, Math.abs(res.centroid[a]));
-    for (let b = 0; b < n; b += 1) if (a !== b) offDiagonal = Math.max(offDiagonal, Math.abs(res.covariance[a * n + b] / res.mass));
+    for (let b = 0; b < n; b += 1)
+      if (a !== b) offDiagonal = Math.max(offDiagonal, Math.abs(res.covariance[a * n + b] / res.mass));
   }
   return { volume, covariance, offDiagonal, centroid, facets: mesh.facets.length, res, exact };
 }

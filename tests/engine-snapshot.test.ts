@@ -112,14 +112,22 @@ function richScene(n: number): Scene {
   const cube = HyperBox(D, new Array<number>(n).fill(0.25));
   let stackTop: Body | null = null;
   for (let i = 0; i < 4; i += 1) {
-    stackTop = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(0, 0.25 + 0.5 * i + 0.01 * i), name: `stack${i}` }));
+    stackTop = world.addBody(
+      new Body(D, { shape: cube, mass: 1, position: at(0, 0.25 + 0.5 * i + 0.01 * i), name: `stack${i}` }),
+    );
   }
   // Tumbling boxes and balls.
   for (let i = 0; i < 5; i += 1) {
     const rotor = new Float64Array(D.r);
     rotor[0] = 1;
     const w = Array.from({ length: D.k }, () => uniform(rand, -2, 2));
-    const shape = i % 2 === 0 ? HyperBox(D, Array.from({ length: n }, () => uniform(rand, 0.15, 0.35))) : HyperSphere(D, uniform(rand, 0.15, 0.3));
+    const shape =
+      i % 2 === 0
+        ? HyperBox(
+            D,
+            Array.from({ length: n }, () => uniform(rand, 0.15, 0.35)),
+          )
+        : HyperSphere(D, uniform(rand, 0.15, 0.3));
     world.addBody(
       new Body(D, {
         shape,
@@ -132,11 +140,36 @@ function richScene(n: number): Scene {
     );
   }
   // A torus and a convex mesh.
-  world.addBody(new Body(D, { shape: HyperTorus(D, 0.4, 0.1, [0, 2]), mass: 1, position: at(-2, 1.5, 0.5), angularVelocity: Array.from({ length: D.k }, (_, p) => (p === 1 ? 1 : 0)) }));
-  const mesh = cubeBoundary(n, new Array<number>(n).fill(0.2).map((a, c) => a + 0.05 * c));
-  world.addBody(new Body(D, { shape: ConvexMesh(D, mesh.vertices, mesh.facets), mass: 1.5, position: at(-2, 3, -0.5), angularVelocity: Array.from({ length: D.k }, (_, p) => 0.3 * (p + 1)) }));
+  world.addBody(
+    new Body(D, {
+      shape: HyperTorus(D, 0.4, 0.1, [0, 2]),
+      mass: 1,
+      position: at(-2, 1.5, 0.5),
+      angularVelocity: Array.from({ length: D.k }, (_, p) => (p === 1 ? 1 : 0)),
+    }),
+  );
+  const mesh = cubeBoundary(
+    n,
+    new Array<number>(n).fill(0.2).map((a, c) => a + 0.05 * c),
+  );
+  world.addBody(
+    new Body(D, {
+      shape: ConvexMesh(D, mesh.vertices, mesh.facets),
+      mass: 1.5,
+      position: at(-2, 3, -0.5),
+      angularVelocity: Array.from({ length: D.k }, (_, p) => 0.3 * (p + 1)),
+    }),
+  );
   // A kinematic box sliding along the ground, pushing what it meets.
-  world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.3)), type: 'kinematic', mass: 0, position: at(6, 0.3, 0), velocity: at(-0.5) }));
+  world.addBody(
+    new Body(D, {
+      shape: HyperBox(D, new Array<number>(n).fill(0.3)),
+      type: 'kinematic',
+      mass: 0,
+      position: at(6, 0.3, 0),
+      velocity: at(-0.5),
+    }),
+  );
 
   // Joints: a soft point joint with a rope to a second ball.
   const bob = world.addBody(new Body(D, { shape: HyperSphere(D, 0.15), mass: 1, position: at(-4, 3, 0), velocity: at(0, 0, 1) }));
@@ -144,26 +177,73 @@ function richScene(n: number): Scene {
   const bob2 = world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 0.5, position: at(-4.5, 2.2, 0) }));
   world.addConstraint(new DistanceJoint(bob, bob2, at(), at(), { mode: 'rope', rest: 0.9 }));
   // A rod from the second ball to a box, which lies on the ground.
-  const rodBox = world.addBody(new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.15)), mass: 1, position: at(-4.5, 0.6, 0.4) }));
+  const rodBox = world.addBody(
+    new Body(D, { shape: HyperBox(D, new Array<number>(n).fill(0.15)), mass: 1, position: at(-4.5, 0.6, 0.4) }),
+  );
   world.addConstraint(new DistanceJoint(bob2, rodBox, at(), at(0.15, 0.15), { mode: 'rod' }));
   // A weld of two boxes falling on the ground.
-  const w1 = world.addBody(new Body(D, { shape: HyperBox(D, at(0.3, 0.1, 0.2, 0.2).map((v) => v || 0.2)), mass: 1, position: at(4, 2.5, -1) }));
+  const w1 = world.addBody(
+    new Body(D, {
+      shape: HyperBox(
+        D,
+        at(0.3, 0.1, 0.2, 0.2).map((v) => v || 0.2),
+      ),
+      mass: 1,
+      position: at(4, 2.5, -1),
+    }),
+  );
   const w2 = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(4.5, 2.8, -1) }));
   world.addConstraint(new FixedJoint(w1, w2, at(0.3, 0.1), at(-0.2, -0.2), { breakForce: 1e6 }));
   // A wheel on a hinge with motor and limits (held), and a breakable one driven into its limit.
-  const wheel = world.addBody(new Body(D, { shape: HyperBox(D, at(0.5, 0.1, 0.1, 0.1).map((v) => v || 0.1)), mass: 2, position: at(0, 4, 2) }));
+  const wheel = world.addBody(
+    new Body(D, {
+      shape: HyperBox(
+        D,
+        at(0.5, 0.1, 0.1, 0.1).map((v) => v || 0.1),
+      ),
+      mass: 2,
+      position: at(0, 4, 2),
+    }),
+  );
   // Its plane is the simple bivector e01 + e02 (normalised by the joint: a rounding that the restore must not redo).
   const plane = Array.from({ length: D.k }, (_, p) => (p < 2 ? 1 : 0));
-  world.addConstraint(new HingeJoint(wheel, null, at(), at(0, 4, 2), { plane, motorSpeed: 1.5, maxMotorTorque: 5, lowerAngle: -0.5, upperAngle: 2, hertz: 30, damping: 1 }));
-  const lever = world.addBody(new Body(D, { shape: HyperBox(D, at(0.4, 0.05, 0.05, 0.05).map((v) => v || 0.05)), mass: 1, position: at(0, 4, -2) }));
+  world.addConstraint(
+    new HingeJoint(wheel, null, at(), at(0, 4, 2), {
+      plane,
+      motorSpeed: 1.5,
+      maxMotorTorque: 5,
+      lowerAngle: -0.5,
+      upperAngle: 2,
+      hertz: 30,
+      damping: 1,
+    }),
+  );
+  const lever = world.addBody(
+    new Body(D, {
+      shape: HyperBox(
+        D,
+        at(0.4, 0.05, 0.05, 0.05).map((v) => v || 0.05),
+      ),
+      mass: 1,
+      position: at(0, 4, -2),
+    }),
+  );
   const breakable = world.addConstraint(
-    new HingeJoint(lever, null, at(-0.4), at(-0.4, 4, -2), { plane: 0, motorSpeed: 3, maxMotorTorque: 80, upperAngle: 0.6, breakTorque: 40 }),
+    new HingeJoint(lever, null, at(-0.4), at(-0.4, 4, -2), {
+      plane: 0,
+      motorSpeed: 3,
+      maxMotorTorque: 80,
+      upperAngle: 0.6,
+      breakTorque: 40,
+    }),
   );
   // A subspace joint: a box kept in the plane of axes 0 and 1 (turning only in it), sliding on the ground.
   const slider = world.addBody(new Body(D, { shape: cube, mass: 1, position: at(-1, 0.6, -2), velocity: at(1.5, 0, 2) }));
   const freePlane = [0];
   const lockAxes = [...Array(n).keys()].filter((c) => c >= 2);
-  world.addConstraint(new SubspaceJoint(slider, null, { lockAxes, freePlanes: freePlane, localA: at(), localB: at(0, 0, -2), worldFrame: n === 4 }));
+  world.addConstraint(
+    new SubspaceJoint(slider, null, { lockAxes, freePlanes: freePlane, localA: at(), localB: at(0, 0, -2), worldFrame: n === 4 }),
+  );
   return { world, breakable, stackTop: stackTop! };
 }
 
@@ -183,7 +263,10 @@ describe('snapshot and restore: bit-identical continuation, every joint type, 3D
       // Mid-fall: the tumbling bodies in the air, the stack settling.
       const { world, breakable } = richScene(n);
       runUntil(world, () => false, 20);
-      expect(world.bodies.some((b) => b.v[1]! < -1), 'something falls').toBe(true);
+      expect(
+        world.bodies.some((b) => b.v[1]! < -1),
+        'something falls',
+      ).toBe(true);
       const mid = restoreWorld(snapshotWorld(world));
       expectSameBytes(snapshotWorld(mid), snapshotWorld(world), `n = ${n}, mid-fall: snapshot of the restored world`);
       expectSameContinuation(world, mid, CONTINUE, `n = ${n}, mid-fall`);
@@ -238,7 +321,17 @@ describe('snapshot and restore: free bodies and a simple contact, n = 2 and 5', 
       }
       // A free body far from everything, with no gravity acting on its spin: a torque-free tumble.
       const far = new Array<number>(n).fill(50);
-      world.addBody(new Body(D, { shape: HyperBox(D, Array.from({ length: n }, (_, c) => 0.1 + 0.1 * c)), mass: 1, position: far, angularVelocity: Array.from({ length: D.k }, (_, p) => 1 + p) }));
+      world.addBody(
+        new Body(D, {
+          shape: HyperBox(
+            D,
+            Array.from({ length: n }, (_, c) => 0.1 + 0.1 * c),
+          ),
+          mass: 1,
+          position: far,
+          angularVelocity: Array.from({ length: D.k }, (_, p) => 1 + p),
+        }),
+      );
       world.step(DT);
       const restored = restoreWorld(snapshotWorld(world));
       expectSameContinuation(world, restored, CONTINUE, `n = ${n}`);
@@ -268,7 +361,14 @@ describe('snapshot and restore: piles, where most broadphase pairs do not touch'
           cell = Math.floor(cell / side);
         }
         p[1] = 0.6 + 1.2 * Math.floor(i / perLayer) + uniform(rand, -0.1, 0.1);
-        world.addBody(new Body(D, { shape: cube, mass: 1, position: p, angularVelocity: Array.from({ length: D.k }, () => uniform(rand, -1, 1)) }));
+        world.addBody(
+          new Body(D, {
+            shape: cube,
+            mass: 1,
+            position: p,
+            angularVelocity: Array.from({ length: D.k }, () => uniform(rand, -1, 1)),
+          }),
+        );
       }
       for (const steps of [25, 150]) {
         while (world.stepCount < steps) world.step(DT);
@@ -373,7 +473,10 @@ describe('snapshot is read-only and restore keeps the order', () => {
       const ids = body.proxyId;
       world.addBody(body);
       const copy = new Body(restored.D, { shape: body.shape, mass: body.mass, material: body.material });
-      copy.storage.set(body.storage.subarray(body.storageOffset, body.storageOffset + Body.recordLength(world.D)), copy.storageOffset);
+      copy.storage.set(
+        body.storage.subarray(body.storageOffset, body.storageOffset + Body.recordLength(world.D)),
+        copy.storageOffset,
+      );
       restored.addBody(copy);
       expect(ids).toBe(-1);
       expect(copy.proxyId).toBe(body.proxyId);
@@ -436,9 +539,13 @@ describe('the last joint of a world removed or broken', () => {
       const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: false } });
       const D = world.D;
       world.addBody(new Body(D, { shape: HalfSpace(D, axis(3, 1), 0), mass: 0 }));
-      const boxes = [0, 1, 2].map((i) => world.addBody(new Body(D, { shape: HyperBox(D, [0.3, 0.3, 0.3]), mass: 1, position: [2 * i, 0.3, 0] })));
+      const boxes = [0, 1, 2].map((i) =>
+        world.addBody(new Body(D, { shape: HyperBox(D, [0.3, 0.3, 0.3]), mass: 1, position: [2 * i, 0.3, 0] })),
+      );
       const rod = world.addBody(new Body(D, { shape: HyperBox(D, [0.4, 0.05, 0.05]), mass: 1, position: [0, 4, 0] }));
-      const joint = world.addConstraint(new PointJoint(boxes[2]!, rod, [0, 0, 0], [0, -3.7, 0], how === 'broken' ? { breakForce: 5 } : {}));
+      const joint = world.addConstraint(
+        new PointJoint(boxes[2]!, rod, [0, 0, 0], [0, -3.7, 0], how === 'broken' ? { breakForce: 5 } : {}),
+      );
       for (let s = 0; s < 30; s += 1) world.step(DT);
       if (how === 'removed') world.removeConstraint(joint);
       else runUntil(world, () => joint.broken, 100);
@@ -455,8 +562,25 @@ describe('snapshot at every step of a bounce', () => {
     const world = new World({ dimensions: 3, gravity: gravity(3), params: { allowSleep: true } });
     const D = world.D;
     world.addBody(new Body(D, { shape: HalfSpace(D, axis(3, 1), 0), mass: 0, material: { restitution: 0.9 } }));
-    world.addBody(new Body(D, { shape: HyperSphere(D, 0.2), mass: 1, position: [0, 1.5, 0], velocity: [0.3, -6, 0], material: { restitution: 0.9, friction: 0.4 }, angularVelocity: [0, 2, 1] }));
-    world.addBody(new Body(D, { shape: HyperBox(D, [0.2, 0.2, 0.2]), mass: 1, position: [1.5, 1.2, 0], velocity: [0, -8, 0], material: { restitution: 0.7 } }));
+    world.addBody(
+      new Body(D, {
+        shape: HyperSphere(D, 0.2),
+        mass: 1,
+        position: [0, 1.5, 0],
+        velocity: [0.3, -6, 0],
+        material: { restitution: 0.9, friction: 0.4 },
+        angularVelocity: [0, 2, 1],
+      }),
+    );
+    world.addBody(
+      new Body(D, {
+        shape: HyperBox(D, [0.2, 0.2, 0.2]),
+        mass: 1,
+        position: [1.5, 1.2, 0],
+        velocity: [0, -8, 0],
+        material: { restitution: 0.7 },
+      }),
+    );
     const AHEAD = 3;
     const states: Float64Array[] = [];
     const snaps: Uint8Array[] = [];
@@ -489,17 +613,232 @@ describe('snapshot at every step of a bounce', () => {
  * it, save it in packages/engine/src/snapshot/ (and check the continuation tests); then list it.
  */
 const KNOWN_FIELDS: Record<string, readonly string[]> = {
-  Body: ['id', 'name', 'D', 'shape', 'materialValue', 'motion', 'massValue', 'invMass', 'inertia', 'invInertia', 'comOffset', 'storage', 'storageOffset', 'stateView', 'hasTorque', 'owner', 'proxyId', 'pose', 'sleeping', 'sleepTimer', 'poseDirty', 'worldIndex', 'solverSlot', 'jointPeers', 'jointCount', 'listeners', 'boundingRadius', 'xView', 'rView', 'vView', 'lView', 'wView', 'fView', 'tView'],
-  World: ['D', 'n', 'currentParams', 'gravityValue', 'bodyList', 'bodyView', 'stepState', 'scratch', 'constants', 'clock', 'broadphase', 'bodyOfProxy', 'narrowScratch', 'contacts', 'solverBodies', 'solver', 'islands', 'jointList', 'jointView', 'jointSolver', 'brokenJoints', 'jointOwner', 'reach', 'boundsStale', 'events', 'collisionEvent', 'setSleeping', 'owner', 'stepParams', 'solverPasses', 'holes'],
-  ContactSet: ['n', 'pointCapacity', 'order', 'count', 'keys', 'bodyA', 'bodyB', 'manifolds', 'normalImpulse', 'approachSpeed', 'patchTangent', 'patchTwist', 'k', 'friction', 'restitution', 'flags', 'capacity', 'freeSlots', 'freeCount', 'orderNext', 'oldIds', 'oldNormal', 'oldApproach', 'oldPoints', 'oldTaken', 'newMatched', 'cache', 'reuseNumbers'],
+  Body: [
+    'id',
+    'name',
+    'D',
+    'shape',
+    'materialValue',
+    'motion',
+    'massValue',
+    'invMass',
+    'inertia',
+    'invInertia',
+    'comOffset',
+    'storage',
+    'storageOffset',
+    'stateView',
+    'hasTorque',
+    'owner',
+    'proxyId',
+    'pose',
+    'sleeping',
+    'sleepTimer',
+    'poseDirty',
+    'worldIndex',
+    'solverSlot',
+    'jointPeers',
+    'jointCount',
+    'listeners',
+    'boundingRadius',
+    'xView',
+    'rView',
+    'vView',
+    'lView',
+    'wView',
+    'fView',
+    'tView',
+  ],
+  World: [
+    'D',
+    'n',
+    'currentParams',
+    'gravityValue',
+    'bodyList',
+    'bodyView',
+    'stepState',
+    'scratch',
+    'constants',
+    'clock',
+    'broadphase',
+    'bodyOfProxy',
+    'narrowScratch',
+    'contacts',
+    'solverBodies',
+    'solver',
+    'islands',
+    'jointList',
+    'jointView',
+    'jointSolver',
+    'brokenJoints',
+    'jointOwner',
+    'reach',
+    'boundsStale',
+    'events',
+    'collisionEvent',
+    'setSleeping',
+    'owner',
+    'stepParams',
+    'solverPasses',
+    'holes',
+  ],
+  ContactSet: [
+    'n',
+    'pointCapacity',
+    'order',
+    'count',
+    'keys',
+    'bodyA',
+    'bodyB',
+    'manifolds',
+    'normalImpulse',
+    'approachSpeed',
+    'patchTangent',
+    'patchTwist',
+    'k',
+    'friction',
+    'restitution',
+    'flags',
+    'capacity',
+    'freeSlots',
+    'freeCount',
+    'orderNext',
+    'oldIds',
+    'oldNormal',
+    'oldApproach',
+    'oldPoints',
+    'oldTaken',
+    'newMatched',
+    'cache',
+    'reuseNumbers',
+  ],
   ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
-  TreeBroadphase: ['n', 'margin', 'pairs', 'pairCount', 'addedPairs', 'addedCount', 'removedPairs', 'removedCount', 'stats', 'capacity', 'flags', 'tightMin', 'tightMax', 'fatMin', 'fatMax', 'planeNormal', 'planeOffset', 'highWater', 'moved', 'movedCount', 'halfSpaces', 'halfSpaceCount', 'freeIds', 'freeCount', 'liveCount', 'keys', 'keyCount', 'keysNext', 'cand', 'candCount', 'dropped', 'droppedCount', 'qMin', 'qMax', 'rayO', 'rayD', 'shift', 'incremental', 'tree', 'leafOf'],
-  ContactEvents: ['n', 'beginCount', 'beginA', 'beginB', 'beginPoint', 'beginNormal', 'beginImpulse', 'endCount', 'endA', 'endB', 'laterA', 'laterB', 'laterCount'],
+  TreeBroadphase: [
+    'n',
+    'margin',
+    'pairs',
+    'pairCount',
+    'addedPairs',
+    'addedCount',
+    'removedPairs',
+    'removedCount',
+    'stats',
+    'capacity',
+    'flags',
+    'tightMin',
+    'tightMax',
+    'fatMin',
+    'fatMax',
+    'planeNormal',
+    'planeOffset',
+    'highWater',
+    'moved',
+    'movedCount',
+    'halfSpaces',
+    'halfSpaceCount',
+    'freeIds',
+    'freeCount',
+    'liveCount',
+    'keys',
+    'keyCount',
+    'keysNext',
+    'cand',
+    'candCount',
+    'dropped',
+    'droppedCount',
+    'qMin',
+    'qMax',
+    'rayO',
+    'rayD',
+    'shift',
+    'incremental',
+    'tree',
+    'leafOf',
+  ],
+  ContactEvents: [
+    'n',
+    'beginCount',
+    'beginA',
+    'beginB',
+    'beginPoint',
+    'beginNormal',
+    'beginImpulse',
+    'endCount',
+    'endA',
+    'endB',
+    'laterA',
+    'laterB',
+    'laterCount',
+  ],
   PointJoint: ['id', 'D', 'a', 'b', 'anchorA', 'anchorB', 'state', 'lambda', 'owner', 'brokenFlag', 'collide', 'listeners'],
-  DistanceJoint: ['id', 'D', 'a', 'b', 'anchorA', 'anchorB', 'state', 'lambda', 'owner', 'brokenFlag', 'collide', 'listeners', 'modeIndex'],
-  FixedJoint: ['id', 'D', 'a', 'b', 'anchorA', 'anchorB', 'state', 'lambda', 'owner', 'brokenFlag', 'collide', 'listeners', 'frameA', 'frameB', 'planes'],
-  HingeJoint: ['id', 'D', 'a', 'b', 'anchorA', 'anchorB', 'state', 'lambda', 'owner', 'brokenFlag', 'collide', 'listeners', 'frameA', 'frameB', 'planeValue'],
-  SubspaceJoint: ['id', 'D', 'a', 'b', 'anchorA', 'anchorB', 'state', 'lambda', 'owner', 'brokenFlag', 'collide', 'listeners', 'axes', 'planes', 'world1', 'frameA', 'frameB'],
+  DistanceJoint: [
+    'id',
+    'D',
+    'a',
+    'b',
+    'anchorA',
+    'anchorB',
+    'state',
+    'lambda',
+    'owner',
+    'brokenFlag',
+    'collide',
+    'listeners',
+    'modeIndex',
+  ],
+  FixedJoint: [
+    'id',
+    'D',
+    'a',
+    'b',
+    'anchorA',
+    'anchorB',
+    'state',
+    'lambda',
+    'owner',
+    'brokenFlag',
+    'collide',
+    'listeners',
+    'frameA',
+    'frameB',
+    'planes',
+  ],
+  HingeJoint: [
+    'id',
+    'D',
+    'a',
+    'b',
+    'anchorA',
+    'anchorB',
+    'state',
+    'lambda',
+    'owner',
+    'brokenFlag',
+    'collide',
+    'listeners',
+    'frameA',
+    'frameB',
+    'planeValue',
+  ],
+  SubspaceJoint: [
+    'id',
+    'D',
+    'a',
+    'b',
+    'anchorA',
+    'anchorB',
+    'state',
+    'lambda',
+    'owner',
+    'brokenFlag',
+    'collide',
+    'listeners',
+    'axes',
+    'planes',
+    'world1',
+    'frameA',
+    'frameB',
+  ],
 };
 
 describe('the snapshot code knows every field', () => {
@@ -529,7 +868,11 @@ describe('the snapshot code knows every field', () => {
       const keys = Object.keys(object);
       const added = keys.filter((k) => !known.has(k));
       const removed = [...known].filter((k) => !keys.includes(k));
-      expect({ name, added, removed }, `${name}: save new fields in packages/engine/src/snapshot/, then list them here`).toEqual({ name, added: [], removed: [] });
+      expect({ name, added, removed }, `${name}: save new fields in packages/engine/src/snapshot/, then list them here`).toEqual({
+        name,
+        added: [],
+        removed: [],
+      });
     }
   });
 });

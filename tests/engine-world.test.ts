@@ -14,9 +14,17 @@ function snapshot(world: World): string {
     id: b.id,
     type: b.type,
     mass: b.mass,
-    state: Array.from(b.storage.subarray(b.storageOffset, b.storageOffset + Body.recordLength(b.D)), (x) => Object.is(x, -0) ? '-0' : x),
+    state: Array.from(b.storage.subarray(b.storageOffset, b.storageOffset + Body.recordLength(b.D)), (x) =>
+      Object.is(x, -0) ? '-0' : x,
+    ),
   }));
-  return JSON.stringify({ bodies, gravity: Array.from(world.gravity), params: world.params, time: world.time, steps: world.stepCount });
+  return JSON.stringify({
+    bodies,
+    gravity: Array.from(world.gravity),
+    params: world.params,
+    time: world.time,
+    steps: world.stepCount,
+  });
 }
 
 function spinningWorld(n: number, count: number): World {
@@ -28,7 +36,14 @@ function spinningWorld(n: number, count: number): World {
   for (let b = 0; b < count; b += 1) {
     const shape = b % 2 === 0 ? HyperBox(D, Array.from(randomArray(rand, n, 0.2, 1))) : HyperSphere(D, 0.4);
     world.addBody(
-      new Body(D, { shape, mass: 1 + b, position: randomArray(rand, n, -5, 5), velocity: randomArray(rand, n), angularVelocity: randomArray(rand, D.k, -3, 3), name: `b${b}` }),
+      new Body(D, {
+        shape,
+        mass: 1 + b,
+        position: randomArray(rand, n, -5, 5),
+        velocity: randomArray(rand, n),
+        angularVelocity: randomArray(rand, D.k, -3, 3),
+        name: `b${b}`,
+      }),
     );
   }
   return world;
@@ -73,7 +88,17 @@ describe('static and kinematic bodies', () => {
       const still = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 0, position: x0, rotor: R0 }));
       const v = randomArray(rand, n, -2, 2);
       const omega = randomArray(rand, D.k, -1.5, 1.5);
-      const kin = world.addBody(new Body(D, { shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1))), type: 'kinematic', mass: 2, position: x0, rotor: R0, velocity: v, angularVelocity: omega }));
+      const kin = world.addBody(
+        new Body(D, {
+          shape: HyperBox(D, Array.from(randomArray(rand, n, 0.3, 1))),
+          type: 'kinematic',
+          mass: 2,
+          position: x0,
+          rotor: R0,
+          velocity: v,
+          angularVelocity: omega,
+        }),
+      );
       kin.applyCentralForce(new Array(n).fill(100)); // ignored
       const stillState = Float64Array.from(still.stateView);
       const h = 1 / 60;
@@ -135,7 +160,9 @@ describe('bodies in the world', () => {
   it('step() without an argument uses params.fixedTimeStep; damping divides v and L by (1 + h c) per step', () => {
     const D = dims(3);
     const world = new World({ dimensions: 3, params: { fixedTimeStep: 1 / 100, linearDamping: 0.5, angularDamping: 2 } });
-    const body = world.addBody(new Body(D, { shape: HyperBox(D, [1, 0.5, 0.2]), velocity: [1, 0, 0], angularVelocity: [0, 0, 1] }));
+    const body = world.addBody(
+      new Body(D, { shape: HyperBox(D, [1, 0.5, 0.2]), velocity: [1, 0, 0], angularVelocity: [0, 0, 1] }),
+    );
     const L0 = Float64Array.from(body.L);
     for (let s = 0; s < 50; s += 1) world.step();
     expect(world.time).toBeCloseTo(0.5, 14);
@@ -169,16 +196,36 @@ describe('bad input leaves the world exactly as it was', () => {
     ['applyTorque of length 4', (_w, b) => b.applyTorque([1, 2, 3, 4]), 'TypeError', /'t'/],
     ['applyCentralImpulse with Infinity', (_w, b) => b.applyCentralImpulse([Infinity, 0, 0, 0]), 'RangeError', /'j'/],
     ['setMass(-2)', (_w, b) => b.setMass(-2), 'RangeError', /'m'/],
-    ['setAngularVelocity of length 4 (a vector, not a bivector)', (_w, b) => b.setAngularVelocity([0, 0, 1, 0]), 'TypeError', /'w'/],
+    [
+      'setAngularVelocity of length 4 (a vector, not a bivector)',
+      (_w, b) => b.setAngularVelocity([0, 0, 1, 0]),
+      'TypeError',
+      /'w'/,
+    ],
     ['applyForce with an arm of length 5', (_w, b) => b.applyForce([1, 0, 0, 0], [0, 0, 0, 0, 1]), 'TypeError', /'r'/],
-    ['addBody of a body that belongs to another world', (w) => {
-      const other = new World({ dimensions: 4 });
-      w.addBody(other.addBody(new Body(D, { shape: HyperSphere(D, 1) })));
-    }, 'RangeError', /another world/],
+    [
+      'addBody of a body that belongs to another world',
+      (w) => {
+        const other = new World({ dimensions: 4 });
+        w.addBody(other.addBody(new Body(D, { shape: HyperSphere(D, 1) })));
+      },
+      'RangeError',
+      /another world/,
+    ],
     // Building a body or a shape with bad arguments throws before anything reaches the world.
     ['new Body with a negative mass', () => new Body(D, { shape: HyperSphere(D, 1), mass: -1 }), 'RangeError', /'mass'/],
-    ['new Body with a position of length 3', () => new Body(D, { shape: HyperSphere(D, 1), position: [0, 1, 0] }), 'TypeError', /'position'/],
-    ['new Body with a non-finite velocity', () => new Body(D, { shape: HyperSphere(D, 1), velocity: [0, NaN, 0, 0] }), 'RangeError', /'velocity'/],
+    [
+      'new Body with a position of length 3',
+      () => new Body(D, { shape: HyperSphere(D, 1), position: [0, 1, 0] }),
+      'TypeError',
+      /'position'/,
+    ],
+    [
+      'new Body with a non-finite velocity',
+      () => new Body(D, { shape: HyperSphere(D, 1), velocity: [0, NaN, 0, 0] }),
+      'RangeError',
+      /'velocity'/,
+    ],
     ['new Body with a 3D box in a 4D world', () => new Body(D, { shape: HyperBox(dims(3), [1, 1, 1]) }), 'RangeError', /'shape'/],
     ['HyperBox with a negative half-extent', () => HyperBox(D, [0.5, -0.5, 0.5, 0.5]), 'RangeError', /'halfExtents'/],
     ['HyperTorus with minor radius >= major radius', () => HyperTorus(D, 1, 1, 0), 'RangeError', /'minorRadius'/],

@@ -90,7 +90,11 @@ function poses(page: Page): Promise<number[][]> {
   return page.evaluate(() => {
     const demo = (globalThis as { physinDemo?: { scene: { children: unknown[] } } }).physinDemo!;
     const out: number[][] = [];
-    for (const child of demo.scene.children as { isPhysinMesh?: boolean; getPositionN(): Float64Array; getRotor(): Float64Array }[]) {
+    for (const child of demo.scene.children as {
+      isPhysinMesh?: boolean;
+      getPositionN(): Float64Array;
+      getRotor(): Float64Array;
+    }[]) {
       if (child.isPhysinMesh) out.push([...child.getPositionN(), ...child.getRotor()]);
     }
     return out;
@@ -102,12 +106,18 @@ function hasDemo(page: Page): Promise<boolean> {
 }
 
 async function waitFrames(page: Page, frames: number): Promise<void> {
-  await page.waitForFunction((n) => ((globalThis as { physinDemo?: { frame: number } }).physinDemo?.frame ?? 0) >= n, frames, { timeout: 120_000, polling: 50 });
+  await page.waitForFunction((n) => ((globalThis as { physinDemo?: { frame: number } }).physinDemo?.frame ?? 0) >= n, frames, {
+    timeout: 120_000,
+    polling: 50,
+  });
 }
 
 describe.runIf(present)('the examples site in Chromium', () => {
   beforeAll(async () => {
-    execFileSync(process.execPath, [join(root, 'examples/node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], { cwd: join(root, 'examples'), stdio: 'inherit' });
+    execFileSync(process.execPath, [join(root, 'examples/node_modules/vite/bin/vite.js'), 'build', '--logLevel', 'warn'], {
+      cwd: join(root, 'examples'),
+      stdio: 'inherit',
+    });
     mkdirSync(artifacts, { recursive: true });
     ({ server, base } = await serveStatic(site));
     browser = await chromium.launch({
@@ -132,7 +142,11 @@ describe.runIf(present)('the examples site in Chromium', () => {
 
   const visits = pages.flatMap((entry) => [
     { dir: entry.dir, query: '', name: entry.dir },
-    ...(entry.variants ?? []).map((query) => ({ dir: entry.dir, query: `${query}&`, name: `${entry.dir}-${query.replace(/[^a-z0-9]+/gi, '')}` })),
+    ...(entry.variants ?? []).map((query) => ({
+      dir: entry.dir,
+      query: `${query}&`,
+      name: `${entry.dir}-${query.replace(/[^a-z0-9]+/gi, '')}`,
+    })),
   ]);
   for (const entry of visits) {
     it(`${entry.name}: loads cleanly, draws, and (physics pages) advances and matches the worker`, async () => {
@@ -153,7 +167,9 @@ describe.runIf(present)('the examples site in Chromium', () => {
         const worker = await open(`${base}/${entry.dir}/?${entry.query}worker=1&frames=${FRAMES}`);
         await waitFrames(worker.page, FRAMES);
         await worker.page.waitForTimeout(300);
-        expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe('worker');
+        expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe(
+          'worker',
+        );
         expect(await poses(worker.page)).toEqual(main);
         await worker.page.screenshot({ path: join(artifacts, `${entry.name}-worker.png`) });
         expect(worker.problems).toEqual([]);
@@ -183,7 +199,9 @@ describe.runIf(present)('the examples site in Chromium', () => {
     const worker = await open(`${file}?worker=1&frames=${FRAMES}`);
     await waitFrames(worker.page, FRAMES);
     await worker.page.waitForTimeout(300);
-    expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe('worker');
+    expect(await worker.page.evaluate(() => (globalThis as { physinDemo?: { thread: string } }).physinDemo!.thread)).toBe(
+      'worker',
+    );
     expect(await poses(worker.page)).toEqual(last);
     // over HTTP, PhysiN.scripts.worker = 'physin_worker.js' loads the file as the specification says
     const served = await open(`${base}/classic/plugin.html?worker=1&frames=${FRAMES}`);
@@ -202,7 +220,22 @@ describe.runIf(present)('the examples site in Chromium', () => {
     await page.waitForTimeout(300);
     const seen = (): Promise<{ w: number; cuts: number[] }> =>
       page.evaluate(() => {
-        const demo = (globalThis as { physinDemo?: { scene: { sliceW: number; children: { isPhysinMesh?: boolean; dimensions?: number | null; visible: boolean; geometry: { drawRange: { count: number } }; scale: { x: number } }[] } } }).physinDemo!;
+        const demo = (
+          globalThis as {
+            physinDemo?: {
+              scene: {
+                sliceW: number;
+                children: {
+                  isPhysinMesh?: boolean;
+                  dimensions?: number | null;
+                  visible: boolean;
+                  geometry: { drawRange: { count: number } };
+                  scale: { x: number };
+                }[];
+              };
+            };
+          }
+        ).physinDemo!;
         const cuts = demo.scene.children
           .filter((o) => o.isPhysinMesh && o.dimensions === 4)
           .map((o) => (o.visible ? o.geometry.drawRange.count * 1000 + Math.round(o.scale.x * 1000) : -1));

@@ -2,7 +2,14 @@
 // diagnostics, the tesseract and its projection from 4D, URL settings and the plot's history.
 import { dims, rotorApplyVector } from '@physin/algebra';
 import { describe, expect, it } from 'vitest';
-import { hypercubeEdges, hypercubeVertices, perspectiveScale, projectFromW, transformPoints, writeSegments } from '../examples/rotors/geometry.js';
+import {
+  hypercubeEdges,
+  hypercubeVertices,
+  perspectiveScale,
+  projectFromW,
+  transformPoints,
+  writeSegments,
+} from '../examples/rotors/geometry.js';
 import { LOG_FLOOR, LogHistory } from '../examples/rotors/history.js';
 import { DEFAULT_SETTINGS, parseSettings, settingsToQuery } from '../examples/rotors/settings.js';
 import { RotorDemo, orthonormalityError, predictedEulerDefect } from '../examples/rotors/sim.js';
@@ -169,7 +176,13 @@ describe('rotors page: tesseract geometry and projection', () => {
 
   it('transforms by the rotor matrix and projects exactly like R v R~ followed by the formula (1e-14)', () => {
     const rand = seeded(7);
-    const demo = new RotorDemo({ rateA: uniform(rand, -3, 3), rateB: uniform(rand, -3, 3), step: 0.05, integrator: 'exp', correct: true });
+    const demo = new RotorDemo({
+      rateA: uniform(rand, -3, 3),
+      rateB: uniform(rand, -3, 3),
+      step: 0.05,
+      integrator: 'exp',
+      correct: true,
+    });
     demo.run(37);
     const D = dims(4);
     const V = hypercubeVertices(4, 1);
@@ -185,7 +198,8 @@ describe('rotors page: tesseract geometry and projection', () => {
       for (let i = 0; i < 4; i += 1) expect(Math.abs(turned[4 * p + i]! - v[i]!)).toBeLessThan(1e-14);
       const s = 4 / (4 - v[3]!);
       // Float32 storage: relative 1e-6.
-      for (let i = 0; i < 3; i += 1) expect(Math.abs(out3[3 * p + i]! - s * v[i]!)).toBeLessThan(1e-6 * Math.max(1, Math.abs(s * v[i]!)));
+      for (let i = 0; i < 3; i += 1)
+        expect(Math.abs(out3[3 * p + i]! - s * v[i]!)).toBeLessThan(1e-6 * Math.max(1, Math.abs(s * v[i]!)));
     }
     for (let e = 0; e < 32; e += 1) {
       for (let i = 0; i < 3; i += 1) {

@@ -44,8 +44,20 @@ async function build() {
     scene.add(torus);
   }
   // the 4-simplex: 5 vertices, 5 boundary tetrahedra
-  const v = [[1, 0, 0, -0.25], [-0.5, 0.87, 0, -0.25], [-0.5, -0.87, 0, -0.25], [0, 0, 0.9, -0.25], [0, 0, 0, 1]];
-  const cells = [[0, 1, 2, 3], [0, 1, 2, 4], [0, 1, 3, 4], [0, 2, 3, 4], [1, 2, 3, 4]];
+  const v = [
+    [1, 0, 0, -0.25],
+    [-0.5, 0.87, 0, -0.25],
+    [-0.5, -0.87, 0, -0.25],
+    [0, 0, 0.9, -0.25],
+    [0, 0, 0, 1],
+  ];
+  const cells = [
+    [0, 1, 2, 3],
+    [0, 1, 2, 4],
+    [0, 1, 3, 4],
+    [0, 2, 3, 4],
+    [1, 2, 3, 4],
+  ];
   if (kinds.has('simplex')) {
     const simplex = new HyperMesh(v, cells, material, 1);
     simplex.setPositionN([0, 8, 0, 0]);
@@ -59,9 +71,20 @@ async function build() {
   for (let f = 0; f < 2; f += 1) {
     const report = await scene.host.step(1 / 60, 1);
     copies.push({
-      steps: 1, time: report.time, bodyCount: report.bodyCount, stride: report.stride, bodies: report.bodies.slice(),
-      collisionCount: 0, collisionStride: report.collisionStride, collisions: new Float32Array(0),
-      broken: new Int32Array(0), brokenCount: 0, slept: new Int32Array(0), sleptCount: 0, woke: new Int32Array(0), wokeCount: 0,
+      steps: 1,
+      time: report.time,
+      bodyCount: report.bodyCount,
+      stride: report.stride,
+      bodies: report.bodies.slice(),
+      collisionCount: 0,
+      collisionStride: report.collisionStride,
+      collisions: new Float32Array(0),
+      broken: new Int32Array(0),
+      brokenCount: 0,
+      slept: new Int32Array(0),
+      sleptCount: 0,
+      woke: new Int32Array(0),
+      wokeCount: 0,
       buffersCreated: report.buffersCreated,
     });
   }
@@ -82,7 +105,7 @@ const { scene, reports } = await build();
 const apply = (r) => scene['applyReport'](r);
 let flip = 0;
 const reportFrames = (count) => {
-  for (let f = 0; f < count; f += 1) apply(reports[(flip++) & 1]);
+  for (let f = 0; f < count; f += 1) apply(reports[flip++ & 1]);
 };
 const flats = Array.from({ length: 16 }, (_, i) => Float64Array.of(0.3 * Math.sin(i * 0.4)));
 const sliceFrames = (count) => {

@@ -34,7 +34,14 @@ let result: { frames: number; bodies: number; visible: number; results: Window[]
 beforeAll(() => {
   const out = execFileSync(
     process.execPath,
-    ['--no-concurrent-recompilation', '--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/three-allocation.mjs'), '1000'],
+    [
+      '--no-concurrent-recompilation',
+      '--expose-gc',
+      '--max-semi-space-size=256',
+      '--min-semi-space-size=64',
+      join(root, 'tests/three-allocation.mjs'),
+      '1000',
+    ],
     { cwd: root, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] },
   );
   result = JSON.parse(out.trim().split('\n').pop()!);

@@ -86,7 +86,7 @@ describe('the quick starts, main thread and worker', () => {
 });
 
 describe('3D conventions', () => {
-  it('mesh.quaternion is three\'s quaternion of the body: a Vector3 angular velocity spins about that axis', async () => {
+  it("mesh.quaternion is three's quaternion of the body: a Vector3 angular velocity spins about that axis", async () => {
     const scene = new Scene({ dimensions: 3, gravity: [0, 0, 0] });
     const box = new BoxMesh(new THREE.BoxGeometry(1, 1, 1), material, 1);
     scene.add(box);

@@ -22,7 +22,13 @@
  * (which re-slices boxes, spheres and both torus paths every frame in a child process with gc).
  */
 import { describe, expect, it } from 'vitest';
-import { BoxSlicer, PolytopeCut, TorusSlicer, flatDistanceSquared, sphereSliceRadius } from '../packages/three/src/slice/index.js';
+import {
+  BoxSlicer,
+  PolytopeCut,
+  TorusSlicer,
+  flatDistanceSquared,
+  sphereSliceRadius,
+} from '../packages/three/src/slice/index.js';
 import { seeded, uniform } from './support/random.js';
 
 type Rand = () => number;
@@ -98,7 +104,15 @@ function turnColumns(M: Float64Array, n: number, i: number, j: number, angle: nu
 }
 
 /** Body coordinates ξ = Mᵀ(X − x) of the flat's point X = (x0 + p0, x1 + p1, x2 + p2, slice…). */
-function bodyCoords(n: number, M: ArrayLike<number>, x: ArrayLike<number>, slice: ArrayLike<number>, px: number, py: number, pz: number): Float64Array {
+function bodyCoords(
+  n: number,
+  M: ArrayLike<number>,
+  x: ArrayLike<number>,
+  slice: ArrayLike<number>,
+  px: number,
+  py: number,
+  pz: number,
+): Float64Array {
   const xi = new Float64Array(n);
   for (let c = 0; c < n; c += 1) {
     let s = M[c]! * px + M[n + c]! * py + M[2 * n + c]! * pz;
@@ -133,15 +147,23 @@ interface Surface {
 function surfaceOf(positions: Float32Array, count: number): Surface {
   let volume = 0;
   let area = 0;
-  let ax = 0, ay = 0, az = 0;
+  let ax = 0,
+    ay = 0,
+    az = 0;
   const centroid: [number, number, number] = [0, 0, 0];
   const lo: [number, number, number] = [Infinity, Infinity, Infinity];
   const hi: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   for (let t = 0; t < count; t += 3) {
     const o = 3 * t;
-    const p0x = positions[o]!, p0y = positions[o + 1]!, p0z = positions[o + 2]!;
-    const p1x = positions[o + 3]!, p1y = positions[o + 4]!, p1z = positions[o + 5]!;
-    const p2x = positions[o + 6]!, p2y = positions[o + 7]!, p2z = positions[o + 8]!;
+    const p0x = positions[o]!,
+      p0y = positions[o + 1]!,
+      p0z = positions[o + 2]!;
+    const p1x = positions[o + 3]!,
+      p1y = positions[o + 4]!,
+      p1z = positions[o + 5]!;
+    const p2x = positions[o + 6]!,
+      p2y = positions[o + 7]!,
+      p2z = positions[o + 8]!;
     const cx = (p1y - p0y) * (p2z - p0z) - (p1z - p0z) * (p2y - p0y);
     const cy = (p1z - p0z) * (p2x - p0x) - (p1x - p0x) * (p2z - p0z);
     const cz = (p1x - p0x) * (p2y - p0y) - (p1y - p0y) * (p2x - p0x);
@@ -164,11 +186,16 @@ function surfaceOf(positions: Float32Array, count: number): Surface {
 
 /** Seeded Monte Carlo volume of {inside(p)} within the box [lo, hi]. */
 function monteCarlo(
-  rand: Rand, samples: number, lo: readonly number[], hi: readonly number[],
+  rand: Rand,
+  samples: number,
+  lo: readonly number[],
+  hi: readonly number[],
   inside: (px: number, py: number, pz: number) => boolean,
 ): number {
   let hits = 0;
-  const sx = hi[0]! - lo[0]!, sy = hi[1]! - lo[1]!, sz = hi[2]! - lo[2]!;
+  const sx = hi[0]! - lo[0]!,
+    sy = hi[1]! - lo[1]!,
+    sz = hi[2]! - lo[2]!;
   for (let s = 0; s < samples; s += 1) {
     if (inside(lo[0]! + sx * rand(), lo[1]! + sy * rand(), lo[2]! + sz * rand())) hits += 1;
   }
@@ -195,7 +222,8 @@ function windingAgreement(positions: Float32Array, normals: Float32Array, count:
 /** Worst | |normal| − 1 | over the vertices. */
 function normalUnitError(normals: Float32Array, count: number): number {
   let worst = 0;
-  for (let v = 0; v < count; v += 1) worst = Math.max(worst, Math.abs(Math.hypot(normals[3 * v]!, normals[3 * v + 1]!, normals[3 * v + 2]!) - 1));
+  for (let v = 0; v < count; v += 1)
+    worst = Math.max(worst, Math.abs(Math.hypot(normals[3 * v]!, normals[3 * v + 1]!, normals[3 * v + 2]!) - 1));
   return worst;
 }
 
@@ -323,7 +351,10 @@ describe('hyperbox slices (BoxSlicer)', () => {
         expect(count).toBeLessThanOrEqual(3 * slicer.maxTriangles);
         let worstLevel = 0;
         for (let v = 0; v < count; v += 1) {
-          worstLevel = Math.max(worstLevel, Math.abs(boxLevel(c, n, positions[3 * v]!, positions[3 * v + 1]!, positions[3 * v + 2]!) - 1));
+          worstLevel = Math.max(
+            worstLevel,
+            Math.abs(boxLevel(c, n, positions[3 * v]!, positions[3 * v + 1]!, positions[3 * v + 2]!) - 1),
+          );
         }
         expect(worstLevel).toBeLessThan(1e-5);
         const s = surfaceOf(positions, count);
@@ -491,7 +522,10 @@ function exactTorusCase(rand: Rand, n: number): TorusCase {
     k += 1;
   }
   const x = Float64Array.from({ length: n }, () => uniform(rand, -3, 3));
-  const slice = Float64Array.from({ length: n - 3 }, (_, a) => x[a + 3]! + uniform(rand, -0.8, 0.8) * minorRadius / Math.sqrt(n - 3));
+  const slice = Float64Array.from(
+    { length: n - 3 },
+    (_, a) => x[a + 3]! + (uniform(rand, -0.8, 0.8) * minorRadius) / Math.sqrt(n - 3),
+  );
   return { majorRadius, minorRadius, planeI, planeJ, x, M, slice };
 }
 
@@ -577,7 +611,14 @@ describe('torus slices (TorusSlicer)', () => {
   const GRID = 20;
 
   /** Checks a traced slice against the n-torus; returns its volume from the triangles. */
-  function checkMarching(c: TorusCase, n: number, slicer: TorusSlicer, positions: Float32Array, normals: Float32Array, mc: Rand): { volume: number; estimate: number; area: number; cell: number } {
+  function checkMarching(
+    c: TorusCase,
+    n: number,
+    slicer: TorusSlicer,
+    positions: Float32Array,
+    normals: Float32Array,
+    mc: Rand,
+  ): { volume: number; estimate: number; area: number; cell: number } {
     const count = slicer.slice(positions, normals, c, c.slice);
     expect(count).toBeGreaterThan(0);
     expect(count % 3).toBe(0);

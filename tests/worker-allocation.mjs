@@ -27,7 +27,11 @@ const { ReportView } = await import(join(dist, 'report.js'));
 const steps = Number(process.argv[2] ?? 5000);
 
 function build(n) {
-  const core = WorldCore.create({ dimensions: n, gravity: n === 3 ? [0, -9.81, 0] : [0, -9.81, 0, 0], params: { allowSleep: false } });
+  const core = WorldCore.create({
+    dimensions: n,
+    gravity: n === 3 ? [0, -9.81, 0] : [0, -9.81, 0, 0],
+    params: { allowSleep: false },
+  });
   let id = 0;
   const floor = new Array(n).fill(0);
   floor[1] = 1;
@@ -36,7 +40,11 @@ function build(n) {
     const position = new Array(n).fill(0);
     position[0] = (i % 5) * 1.1 - 2.2;
     position[1] = 0.5 + Math.floor(i / 5) * 1.0;
-    core.apply({ op: 'addBody', id: id++, description: { shape: { kind: 'box', halfExtents: new Array(n).fill(0.5) }, mass: 1, position } });
+    core.apply({
+      op: 'addBody',
+      id: id++,
+      description: { shape: { kind: 'box', halfExtents: new Array(n).fill(0.5) }, mass: 1, position },
+    });
   }
   return core;
 }
@@ -60,6 +68,13 @@ for (const n of [3, 4]) {
   }
   const short = leastGrowth(run, steps / 5);
   const long = leastGrowth(run, steps);
-  results[n] = { short, long, perStep: (long - short) / (steps - steps / 5), bodies: view.bodyCount, buffersCreated: view.buffersCreated, collisions: view.collisionCount };
+  results[n] = {
+    short,
+    long,
+    perStep: (long - short) / (steps - steps / 5),
+    bodies: view.bodyCount,
+    buffersCreated: view.buffersCreated,
+    collisions: view.collisionCount,
+  };
 }
 console.log(JSON.stringify({ steps, results }));

@@ -28,7 +28,14 @@ let results: Record<string, Measure> = {};
 beforeAll(() => {
   const out = execFileSync(
     process.execPath,
-    ['--no-concurrent-recompilation', '--expose-gc', '--max-semi-space-size=256', '--min-semi-space-size=64', join(root, 'tests/worker-allocation.mjs'), '5000'],
+    [
+      '--no-concurrent-recompilation',
+      '--expose-gc',
+      '--max-semi-space-size=256',
+      '--min-semi-space-size=64',
+      join(root, 'tests/worker-allocation.mjs'),
+      '5000',
+    ],
     { cwd: root, encoding: 'utf8', stdio: ['ignore', 'pipe', 'ignore'] },
   );
   results = (JSON.parse(out.trim().split('\n').pop()!) as { results: Record<string, Measure> }).results;

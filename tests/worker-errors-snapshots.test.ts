@@ -26,8 +26,24 @@ const badCalls: [string, (h: WorldHost, s: ReturnType<typeof build4D>) => unknow
   ['an unknown shape kind', (h) => h.addBody({ shape: { kind: 'cone' } as never, mass: 1 }), RangeError],
   ['an unknown body property', (h) => h.addBody({ shape: { kind: 'sphere', radius: 1 }, colour: 'red' } as never), RangeError],
   ['a position with NaN', (h) => h.addBody({ shape: { kind: 'sphere', radius: 1 }, position: [0, NaN, 0, 0] }), RangeError],
-  ['a joint on an unknown body', (h) => h.addJoint({ kind: 'point', a: 999, b: null, localA: [0, 0, 0, 0], localB: [0, 0, 0, 0] }), RangeError],
-  ['a non-simple hinge plane', (h, s) => h.addJoint({ kind: 'hinge', a: s.boxes[0]!, b: s.boxes[1]!, localA: [0, 0, 0, 0], localB: [0, 0, 0, 0], options: { plane: [1, 0, 0, 0, 0, 1] } }), RangeError],
+  [
+    'a joint on an unknown body',
+    (h) => h.addJoint({ kind: 'point', a: 999, b: null, localA: [0, 0, 0, 0], localB: [0, 0, 0, 0] }),
+    RangeError,
+  ],
+  [
+    'a non-simple hinge plane',
+    (h, s) =>
+      h.addJoint({
+        kind: 'hinge',
+        a: s.boxes[0]!,
+        b: s.boxes[1]!,
+        localA: [0, 0, 0, 0],
+        localB: [0, 0, 0, 0],
+        options: { plane: [1, 0, 0, 0, 0, 1] },
+      }),
+    RangeError,
+  ],
   ['an unknown command', (h) => h.execute('fly' as never, {} as never), RangeError],
   ['an impulse of the wrong length', (h, s) => h.execute('applyCentralImpulse', { id: s.boxes[0]!, impulse: [1, 2] }), TypeError],
   ['a velocity with NaN', (h, s) => h.execute('setLinearVelocity', { id: s.boxes[0]!, velocity: [0, NaN, 0, 0] }), RangeError],

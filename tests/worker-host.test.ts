@@ -9,7 +9,10 @@ import { build3D, build4D, reportBytes, script4D } from './support/worker-scenes
 
 const hosts: WorldHost[] = [];
 async function open(dimensions: number, thread: ThreadKind, gravity?: number[]): Promise<WorldHost> {
-  const host = await openWorld({ dimensions, gravity: gravity ?? [0, -9.81, ...new Array<number>(dimensions - 2).fill(0)] }, { thread });
+  const host = await openWorld(
+    { dimensions, gravity: gravity ?? [0, -9.81, ...new Array<number>(dimensions - 2).fill(0)] },
+    { thread },
+  );
   hosts.push(host);
   return host;
 }
@@ -61,7 +64,13 @@ describe('the report', () => {
   it('holds the specification record id | x | R | v | L for every body', async () => {
     const host = await open(4, 'main');
     host.addBody({ shape: { kind: 'halfspace', normal: [0, 1, 0, 0], offset: 0 }, mass: 0 });
-    const id = host.addBody({ shape: { kind: 'box', halfExtents: [0.5, 0.5, 0.5, 0.5] }, mass: 2, position: [1, 3, 0, -1], velocity: [1, 0, 0, 0], angularVelocity: [0, 0, 0.5, 0, 0, 0] });
+    const id = host.addBody({
+      shape: { kind: 'box', halfExtents: [0.5, 0.5, 0.5, 0.5] },
+      mass: 2,
+      position: [1, 3, 0, -1],
+      velocity: [1, 0, 0, 0],
+      angularVelocity: [0, 0, 0.5, 0, 0, 0],
+    });
     const r = (await host.step(0))!;
     expect(r.stride).toBe(1 + 4 + 8 + 4 + 6);
     expect(r.bodyCount).toBe(2);
@@ -71,7 +80,7 @@ describe('the report', () => {
     expect(r.bodies[at + 5]).toBe(1); // identity rotor
     expect(Array.from(r.bodies.subarray(at + 13, at + 17))).toEqual([1, 0, 0, 0]);
     // L = I ω for a hypercube of mass 2, side 1: I = m (a² + b²) / 3 with a = b = 0.5 → 1/3 per plane
-    expect(r.bodies[at + 17 + 2]).toBeCloseTo((2 * (0.25 + 0.25)) / 3 * 0.5, 6);
+    expect(r.bodies[at + 17 + 2]).toBeCloseTo(((2 * (0.25 + 0.25)) / 3) * 0.5, 6);
   });
 
   it('accumulator: step(1/30, 2) takes two steps, step(0.2, 3) three and drops the rest, step(0) none', async () => {
@@ -93,7 +102,12 @@ describe('the report', () => {
     for (const thread of ['main', 'worker'] as const) {
       const host = await open(3, thread);
       host.addBody({ shape: { kind: 'halfspace', normal: [0, 1, 0], offset: 0 }, mass: 0 });
-      for (let i = 0; i < 50; i += 1) host.addBody({ shape: { kind: 'box', halfExtents: [0.2, 0.2, 0.2] }, mass: 1, position: [(i % 7) * 0.5, 0.3 + 0.45 * Math.floor(i / 7), 0] });
+      for (let i = 0; i < 50; i += 1)
+        host.addBody({
+          shape: { kind: 'box', halfExtents: [0.2, 0.2, 0.2] },
+          mass: 1,
+          position: [(i % 7) * 0.5, 0.3 + 0.45 * Math.floor(i / 7), 0],
+        });
       let r: StepReport = (await host.step(1 / 60))!;
       for (let i = 0; i < 120; i += 1) r = (await host.step(1 / 60))!;
       const warm = r.buffersCreated;
@@ -147,7 +161,14 @@ describe('events', () => {
       expect(ends.length).toBe(1);
       // a joint that breaks
       const weight = host.addBody({ shape: { kind: 'sphere', radius: 0.2 }, mass: 50, position: [5, 5, 0] });
-      const joint = host.addJoint({ kind: 'point', a: weight, b: null, localA: [0, 0, 0], localB: [5, 5, 0], options: { breakForce: 100 } });
+      const joint = host.addJoint({
+        kind: 'point',
+        a: weight,
+        b: null,
+        localA: [0, 0, 0],
+        localB: [5, 5, 0],
+        options: { breakForce: 100 },
+      });
       const broken: number[] = [];
       for (let i = 0; i < 10; i += 1) {
         const r = (await host.step(1 / 60))!;

@@ -110,7 +110,15 @@ function rayTo(rand: () => number, p: Float64Array, N: Float64Array): { origin: 
   return { origin: axpy(p, -t, dir), dir, t };
 }
 
-function expectHit(world: World, origin: Float64Array, dir: Float64Array, t: number, body: Body, ex: Expected, tol: number): void {
+function expectHit(
+  world: World,
+  origin: Float64Array,
+  dir: Float64Array,
+  t: number,
+  body: Body,
+  ex: Expected,
+  tol: number,
+): void {
   // scale the direction: rayCast normalises it
   const scaled = dir.map((x) => 2.5 * x);
   const hit = castRay(world, origin, scaled, t + 10);
@@ -177,7 +185,9 @@ describe('world.rayCast against each shape (analytic hits)', () => {
           p = toWorld(body, local);
           N = dirToWorld(body, shape.facetNormals.subarray(f * n, f * n + n));
           // sanity of the test's own geometry: the point is on that facet plane
-          expect(Math.abs(dot(shape.facetNormals.subarray(f * n, f * n + n), local) - shape.facetOffsets[f]!)).toBeLessThanOrEqual(1e-12);
+          expect(
+            Math.abs(dot(shape.facetNormals.subarray(f * n, f * n + n), local) - shape.facetOffsets[f]!),
+          ).toBeLessThanOrEqual(1e-12);
         }
         const { origin, dir, t } = rayTo(rand, p, N);
         expectHit(world, origin, dir, t, body, { point: p, normal: N }, TOL);
@@ -269,7 +279,12 @@ describe('world.rayCast over several bodies', () => {
       const hit = castRay(world, origin, dir, 100);
       expect(hit!.body).toBe(balls[0]!.body);
       expect(Math.abs(hit!.distance - balls[0]!.t)).toBeLessThanOrEqual(TOL);
-      expect(maxDiff(hit!.normal, dir.map((c) => -c))).toBeLessThanOrEqual(TOL);
+      expect(
+        maxDiff(
+          hit!.normal,
+          dir.map((c) => -c),
+        ),
+      ).toBeLessThanOrEqual(TOL);
       // cut-off just before and just after the first hit
       expect(castRay(world, origin, dir, balls[0]!.t - 1e-6)).toBeNull();
       expect(castRay(world, origin, dir, balls[0]!.t + 1e-6)!.body).toBe(balls[0]!.body);
@@ -280,9 +295,21 @@ describe('world.rayCast over several bodies', () => {
       expect(next.body).toBe(balls[3]!.body);
       expect(Math.abs(next.distance - (balls[3]!.t - (balls[2]!.t + 2 * balls[2]!.rho + 0.05)))).toBeLessThanOrEqual(TOL);
       // pointing away: only the half-space far behind, which it never reaches going forward...
-      expect(castRay(world, origin, dir.map((c) => -c), 40)).toBeNull();
+      expect(
+        castRay(
+          world,
+          origin,
+          dir.map((c) => -c),
+          40,
+        ),
+      ).toBeNull();
       // ...but a long enough ray does reach it: distance 50 + origin·dir
-      const back = castRay(world, origin, dir.map((c) => -c), 100)!;
+      const back = castRay(
+        world,
+        origin,
+        dir.map((c) => -c),
+        100,
+      )!;
       expect(Math.abs(back.distance - (50 + dot(dir, origin)))).toBeLessThanOrEqual(TOL);
       // starting inside ball 4: distance 0 at the origin
       const inside = axpy(origin, balls[4]!.t + balls[4]!.rho * 0.5, dir);
@@ -302,7 +329,9 @@ describe('world.rayCast over several bodies', () => {
       const pos = new Array<number>(n).fill(0);
       pos[1] = 10;
       const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: pos }));
-      const box = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: pos.map((c, k) => (k === 0 ? 5 : c)) }));
+      const box = world.addBody(
+        new Body(D, { shape: HyperBox(D, new Array(n).fill(0.5)), mass: 1, position: pos.map((c, k) => (k === 0 ? 5 : c)) }),
+      );
       const down = new Array<number>(n).fill(0);
       down[1] = -1;
       const above = new Array<number>(n).fill(0);
@@ -326,10 +355,22 @@ describe('world.rayCast over several bodies', () => {
       hit = castRay(world, above, down, 100)!;
       expect(Math.abs(hit.distance - (20 - 3.5))).toBeLessThanOrEqual(TOL);
       // queryBox sees it there too
-      expect(queryBox(world, moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([ball]);
+      expect(
+        queryBox(
+          world,
+          moved.map((c) => c - 0.1),
+          moved.map((c) => c + 0.1),
+        ),
+      ).toEqual([ball]);
       world.removeBody(ball);
       expect(castRay(world, above, down, 100)).toBeNull();
-      expect(queryBox(world, moved.map((c) => c - 0.1), moved.map((c) => c + 0.1))).toEqual([]);
+      expect(
+        queryBox(
+          world,
+          moved.map((c) => c - 0.1),
+          moved.map((c) => c + 0.1),
+        ),
+      ).toEqual([]);
     });
   }
 });
@@ -431,7 +472,11 @@ function randomScene(n: number, seed: number, count: number): World {
       case 2: {
         const i0 = Math.floor(rand() * n);
         const j0 = (i0 + 1 + Math.floor(rand() * (n - 1))) % n;
-        body = new Body(D, { shape: HyperTorus(D, uniform(rand, 0.5, 1), uniform(rand, 0.1, 0.3), [i0, j0]), mass: 1, position: x });
+        body = new Body(D, {
+          shape: HyperTorus(D, uniform(rand, 0.5, 1), uniform(rand, 0.1, 0.3), [i0, j0]),
+          mass: 1,
+          position: x,
+        });
         break;
       }
       case 3:
@@ -469,7 +514,8 @@ describe('world.queryBox', () => {
           const got = queryBox(world, min, max);
           const want = bruteQuery(world, min, max);
           expect(got).toEqual(want);
-          for (let i = 1; i < got.length; i += 1) expect(world.bodies.indexOf(got[i]!)).toBeGreaterThan(world.bodies.indexOf(got[i - 1]!));
+          for (let i = 1; i < got.length; i += 1)
+            expect(world.bodies.indexOf(got[i]!)).toBeGreaterThan(world.bodies.indexOf(got[i - 1]!));
           if (got.length > 0) nonEmpty += 1;
           total += got.length;
         }
@@ -502,7 +548,9 @@ describe('world.queryBox', () => {
 
 describe('bad arguments throw and change nothing', () => {
   function snapshot(world: World): string {
-    return JSON.stringify(world.bodies.map((b) => [Array.from(b.x), Array.from(b.R), Array.from(b.v), Array.from(b.w), b.isSleeping]));
+    return JSON.stringify(
+      world.bodies.map((b) => [Array.from(b.x), Array.from(b.R), Array.from(b.v), Array.from(b.w), b.isSleeping]),
+    );
   }
 
   for (const n of [2, 4, 6]) {
@@ -532,8 +580,22 @@ describe('bad arguments throw and change nothing', () => {
       expectBad(() => castRay(world, [...o, 0], d, 10));
       expectBad(() => castRay(world, o, d.slice(1), 10));
       expectBad(() => castRay(world, o, new Array(n).fill(0), 10), RangeError);
-      expectBad(() => castRay(world, o, d.map((c, k) => (k === 1 ? NaN : c)), 10));
-      expectBad(() => castRay(world, o.map(() => Infinity), d, 10));
+      expectBad(() =>
+        castRay(
+          world,
+          o,
+          d.map((c, k) => (k === 1 ? NaN : c)),
+          10,
+        ),
+      );
+      expectBad(() =>
+        castRay(
+          world,
+          o.map(() => Infinity),
+          d,
+          10,
+        ),
+      );
       expectBad(() => castRay(world, o, d, -1), RangeError);
       expectBad(() => castRay(world, o, d, NaN));
       expectBad(() => castRay(world, o, d, '10' as unknown as number), TypeError);
@@ -541,13 +603,29 @@ describe('bad arguments throw and change nothing', () => {
       expectBad(() => queryBox(world, lo.slice(1), hi));
       expectBad(() => queryBox(world, lo, [...hi, 0]));
       expectBad(() => queryBox(world, hi, lo), RangeError);
-      expectBad(() => queryBox(world, lo.map((c, k) => (k === n - 1 ? 3 : c)), hi), RangeError);
-      expectBad(() => queryBox(world, lo.map(() => NaN), hi));
+      expectBad(
+        () =>
+          queryBox(
+            world,
+            lo.map((c, k) => (k === n - 1 ? 3 : c)),
+            hi,
+          ),
+        RangeError,
+      );
+      expectBad(() =>
+        queryBox(
+          world,
+          lo.map(() => NaN),
+          hi,
+        ),
+      );
       expectBad(() => queryBox(world, 'ab' as unknown as number[], hi), TypeError);
 
       expect(snapshot(world)).toBe(before);
       const again = castRay(world, o, d, 50);
-      expect(again === null ? null : [again.body, again.distance]).toEqual(reference === null ? null : [reference.body, reference.distance]);
+      expect(again === null ? null : [again.body, again.distance]).toEqual(
+        reference === null ? null : [reference.body, reference.distance],
+      );
       expect(queryBox(world, lo, hi)).toEqual(refQuery);
     });
   }

@@ -10,9 +10,20 @@ describe('world.stats', () => {
   it('counts bodies, awake bodies, joints, pairs, contacts, points and solver passes', () => {
     const D = dims(3);
     const world = new World({ dimensions: 3, gravity: [0, -9.81, 0] });
-    expect(world.stats).toEqual({ bodies: 0, awakeBodies: 0, joints: 0, pairs: 0, contacts: 0, touching: 0, contactPoints: 0, solverPasses: 0 });
+    expect(world.stats).toEqual({
+      bodies: 0,
+      awakeBodies: 0,
+      joints: 0,
+      pairs: 0,
+      contacts: 0,
+      touching: 0,
+      contactPoints: 0,
+      solverPasses: 0,
+    });
     world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
-    const boxes = [0, 1, 2].map((i) => world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.5, 0.5]), mass: 1, position: [0, 0.5 + i, 0] })));
+    const boxes = [0, 1, 2].map((i) =>
+      world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.5, 0.5]), mass: 1, position: [0, 0.5 + i, 0] })),
+    );
     const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.2), mass: 1, position: [5, 3, 0] }));
     world.addConstraint(new PointJoint(ball, null, [0, 0.5, 0], [5, 3.5, 0]));
     world.step(1 / 60);
@@ -38,7 +49,9 @@ describe('world.stats', () => {
   it('bodies is one frozen list until the world changes, then a new one; removal by index', () => {
     const D = dims(2);
     const world = new World({ dimensions: 2 });
-    const bodies = Array.from({ length: 2000 }, (_, i) => world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 1, position: [i, 0] })));
+    const bodies = Array.from({ length: 2000 }, (_, i) =>
+      world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 1, position: [i, 0] })),
+    );
     const list = world.bodies;
     expect(world.bodies).toBe(list);
     expect(Object.isFrozen(list)).toBe(true);
@@ -58,7 +71,11 @@ describe('world.stats', () => {
     const make = (): { world: World; balls: Body[] } => {
       const world = new World({ dimensions: 3, gravity: [0, -9.81, 0] });
       world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
-      const balls = Array.from({ length: 30 }, (_, i) => world.addBody(new Body(D, { shape: HyperSphere(D, 0.25), mass: 1, position: [i % 5, 0.25 + Math.floor(i / 5) * 0.5, 0] })));
+      const balls = Array.from({ length: 30 }, (_, i) =>
+        world.addBody(
+          new Body(D, { shape: HyperSphere(D, 0.25), mass: 1, position: [i % 5, 0.25 + Math.floor(i / 5) * 0.5, 0] }),
+        ),
+      );
       return { world, balls };
     };
     const a = make();

@@ -71,7 +71,8 @@ export function timeLoop(body, options = {}) {
 export function timeOp(op, args, options = {}) {
   const len = args[0]?.length ?? 1;
   for (const a of args) {
-    if (a.length !== len || (len & (len - 1)) !== 0) throw new RangeError('timeOp: every input list must have the same power-of-two length');
+    if (a.length !== len || (len & (len - 1)) !== 0)
+      throw new RangeError('timeOp: every input list must have the same power-of-two length');
   }
   const names = args.map((_, i) => `a${i}`);
   const call = `op(${names.map((a) => `${a}[j]`).join(', ')})`;

@@ -60,7 +60,9 @@ function physinScene(n, params, makeBodies, jointList) {
   gravity[1] = -GRAVITY;
   const world = new World({ dimensions: n, gravity, params: { allowSleep: false, ...params } });
   const bodies = makeBodies(D).map((b) => world.addBody(b));
-  const joints = jointList.map(([ia, la, ib, lb]) => world.addConstraint(new PointJoint(bodies[ia], ib < 0 ? null : bodies[ib], la, lb)));
+  const joints = jointList.map(([ia, la, ib, lb]) =>
+    world.addConstraint(new PointJoint(bodies[ia], ib < 0 ? null : bodies[ib], la, lb)),
+  );
   const pa = new Float64Array(n);
   const pb = new Float64Array(n);
   const error = () => {
@@ -101,7 +103,9 @@ export function physinChain({ n = 3, count = 10, start = 'horizontal', params = 
     (D) => {
       const shape = HyperSphere(D, LINK_RADIUS);
       const rotor = start === 'hanging' ? rotorFromPlane(D, new Float64Array(D.r), 0, 1, -Math.PI / 2) : undefined;
-      return positions.map((position, i) => new Body(D, { shape, mass: 1, position, ...(rotor ? { rotor } : {}), name: `link${i}` }));
+      return positions.map(
+        (position, i) => new Body(D, { shape, mass: 1, position, ...(rotor ? { rotor } : {}), name: `link${i}` }),
+      );
     },
     chainJoints(count, n),
   );
@@ -141,7 +145,8 @@ export function physinGrid({ side = 20, params = {} } = {}) {
     (D) => {
       const shape = HyperSphere(D, BALL_RADIUS);
       const out = [];
-      for (let row = 0; row < side; row += 1) for (let col = 0; col < side; col += 1) out.push(new Body(D, { shape, mass: 1, position: gridPosition(row, col, n) }));
+      for (let row = 0; row < side; row += 1)
+        for (let col = 0; col < side; col += 1) out.push(new Body(D, { shape, mass: 1, position: gridPosition(row, col, n) }));
       return out;
     },
     gridJoints(side, n),
@@ -155,7 +160,11 @@ function quatRotate(q, v) {
   const tx = 2 * (q.y * v[2] - q.z * v[1]);
   const ty = 2 * (q.z * v[0] - q.x * v[2]);
   const tz = 2 * (q.x * v[1] - q.y * v[0]);
-  return [v[0] + q.w * tx + (q.y * tz - q.z * ty), v[1] + q.w * ty + (q.z * tx - q.x * tz), v[2] + q.w * tz + (q.x * ty - q.y * tx)];
+  return [
+    v[0] + q.w * tx + (q.y * tz - q.z * ty),
+    v[1] + q.w * ty + (q.z * tx - q.x * tz),
+    v[2] + q.w * tz + (q.x * ty - q.y * tx),
+  ];
 }
 
 function peerError(list, pose) {
@@ -187,7 +196,10 @@ function rapierScene(RAPIER, dt, positions, shapeDesc, list, rotation, radius) {
   const vec = (a) => ({ x: a[0], y: a[1], z: a[2] });
   for (const [ia, la, ib, lb] of list) {
     const data = RAPIER.JointData.spherical(vec(la), vec(lb));
-    const joint = ib < 0 ? world.createImpulseJoint(RAPIER.JointData.spherical(vec(la), vec(lb)), bodies[ia], ground, true) : world.createImpulseJoint(data, bodies[ia], bodies[ib], true);
+    const joint =
+      ib < 0
+        ? world.createImpulseJoint(RAPIER.JointData.spherical(vec(la), vec(lb)), bodies[ia], ground, true)
+        : world.createImpulseJoint(data, bodies[ia], bodies[ib], true);
     joint.setContactsEnabled(false);
   }
   const pose = (i, local) => {
@@ -201,7 +213,10 @@ function rapierScene(RAPIER, dt, positions, shapeDesc, list, rotation, radius) {
       const m = b.mass();
       const v = b.linvel();
       const w = b.angvel();
-      e += 0.5 * m * (v.x * v.x + v.y * v.y + v.z * v.z) + 0.5 * 0.4 * m * radius * radius * (w.x * w.x + w.y * w.y + w.z * w.z) + m * GRAVITY * b.translation().y;
+      e +=
+        0.5 * m * (v.x * v.x + v.y * v.y + v.z * v.z) +
+        0.5 * 0.4 * m * radius * radius * (w.x * w.x + w.y * w.y + w.z * w.z) +
+        m * GRAVITY * b.translation().y;
     }
     return e;
   };
@@ -228,7 +243,15 @@ export function rapierGrid(RAPIER, { side = 20, dt = 1 / 60 } = {}) {
   const positions = [];
   for (let row = 0; row < side; row += 1) for (let col = 0; col < side; col += 1) positions.push(gridPosition(row, col, 3));
   const volume = (4 / 3) * Math.PI * BALL_RADIUS ** 3;
-  return rapierScene(RAPIER, dt, positions, () => RAPIER.ColliderDesc.ball(BALL_RADIUS).setDensity(1 / volume), gridJoints(side, 3), null, BALL_RADIUS);
+  return rapierScene(
+    RAPIER,
+    dt,
+    positions,
+    () => RAPIER.ColliderDesc.ball(BALL_RADIUS).setDensity(1 / volume),
+    gridJoints(side, 3),
+    null,
+    BALL_RADIUS,
+  );
 }
 
 /** A cannon-es scene: GSSolver 10 iterations, NaiveBroadphase replaced by SAP, PointToPointConstraint (collideConnected false). */
@@ -262,7 +285,10 @@ function cannonScene(CANNON, dt, positions, makeShape, list, quaternion) {
     let e = 0;
     for (const b of bodies) {
       const r = b.shapes[0].radius;
-      e += 0.5 * b.mass * b.velocity.lengthSquared() + 0.5 * 0.4 * b.mass * r * r * b.angularVelocity.lengthSquared() + b.mass * GRAVITY * b.position.y;
+      e +=
+        0.5 * b.mass * b.velocity.lengthSquared() +
+        0.5 * 0.4 * b.mass * r * r * b.angularVelocity.lengthSquared() +
+        b.mass * GRAVITY * b.position.y;
     }
     return e;
   };

@@ -32,7 +32,14 @@ export function buildPhysinScene(layout, params = {}) {
   const world = new World({ dimensions: n, gravity, params: { ...PHYSIN_BENCH_PARAMS, ...params } });
   const up = new Array(n).fill(0);
   up[1] = 1;
-  const ground = world.addBody(new Body(D, { shape: HalfSpace(D, up, 0), mass: 0, material: { friction: FRICTION, restitution: RESTITUTION }, name: 'ground' }));
+  const ground = world.addBody(
+    new Body(D, {
+      shape: HalfSpace(D, up, 0),
+      mass: 0,
+      material: { friction: FRICTION, restitution: RESTITUTION },
+      name: 'ground',
+    }),
+  );
   const shape = HyperBox(D, new Array(n).fill(HALF));
   const material = { friction: FRICTION, restitution: RESTITUTION };
   const rotor = new Float64Array(D.r);
@@ -53,7 +60,11 @@ export function buildPhysinScene(layout, params = {}) {
     ground,
     step: (dt = DT) => world.step(dt),
     positions: () => boxes.map((b) => Array.from(b.x)),
-    judge: () => judge(layout, boxes.map((b) => Array.from(b.x))),
+    judge: () =>
+      judge(
+        layout,
+        boxes.map((b) => Array.from(b.x)),
+      ),
   };
 }
 

@@ -25,7 +25,6 @@ const place = { x: 2.6, w: 0, sliceW: 0 };
 moving.setPositionN([place.x, 1.2, 0, place.w]);
 scene.add(fixed, moving);
 
-
 /**
  * The least distance between the two tori's solids (negative when they overlap): the closest
  * approach of the blue circle to the orange one, less both tube radii, sampled round the circle.
@@ -49,7 +48,9 @@ function gap(): number {
 /** True when, both at w = 0, the blue circle passes once through the orange one's disc, the tubes apart. */
 function linked(): boolean {
   // solids that overlap are not a chain link (one would have to be cut)
-  return gap() >= 0 && Math.abs(place.w) < 1e-9 && Math.abs(place.x) < MAJOR + MAJOR && Math.abs(Math.abs(place.x) - MAJOR) < MAJOR;
+  return (
+    gap() >= 0 && Math.abs(place.w) < 1e-9 && Math.abs(place.x) < MAJOR + MAJOR && Math.abs(Math.abs(place.x) - MAJOR) < MAJOR
+  );
 }
 
 const status = document.getElementById('status')!;
@@ -66,8 +67,14 @@ const move = (): void => {
 };
 
 const gui = new GUI({ container: document.getElementById('gui')!, title: 'The blue donut' });
-gui.add(place, 'x', -3, 3, 0.01).decimals(2).onChange(() => ((script = []), move()));
-gui.add(place, 'w', -2, 2, 0.01).decimals(2).onChange(() => ((script = []), move()));
+gui
+  .add(place, 'x', -3, 3, 0.01)
+  .decimals(2)
+  .onChange(() => ((script = []), move()));
+gui
+  .add(place, 'w', -2, 2, 0.01)
+  .decimals(2)
+  .onChange(() => ((script = []), move()));
 const setSlice = (w: number): void => {
   place.sliceW = w;
   scene.sliceW = w;
@@ -78,7 +85,11 @@ gui.add(place, 'sliceW', -1, 1, 0.01).decimals(2).name('sliceW (the flat)').onCh
 
 /** "Link them": lift in w, slide along x to the orange ring's tube, come back to w = 0. */
 let script: { to: { x: number; w: number } }[] = [];
-const linkScript = (): { to: { x: number; w: number } }[] => [{ to: { x: place.x, w: 0.8 } }, { to: { x: MAJOR, w: 0.8 } }, { to: { x: MAJOR, w: 0 } }];
+const linkScript = (): { to: { x: number; w: number } }[] => [
+  { to: { x: place.x, w: 0.8 } },
+  { to: { x: MAJOR, w: 0.8 } },
+  { to: { x: MAJOR, w: 0 } },
+];
 gui.add({ link: () => (script = linkScript()) }, 'link').name('link them');
 gui.add({ reset: () => ((script = []), (place.x = 2.6), (place.w = 0), move()) }, 'reset');
 /** One frame of the scripted moves; the page plays "link them" once, shortly after it opens. */
@@ -123,7 +134,13 @@ move();
 const canvas = document.getElementById('view') as HTMLCanvasElement;
 // the scripted moves advance once per simulated frame (not per animation frame), so a run is the
 // same in either thread
-const demo = startDemo(scene, { canvas, eye: [2.4, 3.6, 6.2], target: [1.2, 1.1, 0], stats: document.getElementById('stats'), beforeFrame: (frame) => advance(frame) });
+const demo = startDemo(scene, {
+  canvas,
+  eye: [2.4, 3.6, 6.2],
+  target: [1.2, 1.1, 0],
+  stats: document.getElementById('stats'),
+  beforeFrame: (frame) => advance(frame),
+});
 
 // --- dragging the blue donut in the picture -----------------------------------------------------
 // A press on the blue cut grabs it (the camera stops orbiting): moving the pointer slides it along
@@ -179,9 +196,16 @@ function shadowOf(mesh: HyperTorusMesh, colour: number, plane: 'xy' | 'xz'): THR
   const points: THREE.Vector3[] = [];
   for (let k = 0; k < 96; k += 1) {
     const t = (2 * Math.PI * k) / 96;
-    points.push(plane === 'xy' ? new THREE.Vector3(MAJOR * Math.cos(t), MAJOR * Math.sin(t), 0) : new THREE.Vector3(MAJOR * Math.cos(t), 0, MAJOR * Math.sin(t)));
+    points.push(
+      plane === 'xy'
+        ? new THREE.Vector3(MAJOR * Math.cos(t), MAJOR * Math.sin(t), 0)
+        : new THREE.Vector3(MAJOR * Math.cos(t), 0, MAJOR * Math.sin(t)),
+    );
   }
-  const line = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(points), new THREE.LineDashedMaterial({ color: colour, dashSize: 0.08, gapSize: 0.06 }));
+  const line = new THREE.LineLoop(
+    new THREE.BufferGeometry().setFromPoints(points),
+    new THREE.LineDashedMaterial({ color: colour, dashSize: 0.08, gapSize: 0.06 }),
+  );
   line.computeLineDistances();
   const follow = (): void => {
     requestAnimationFrame(follow);

@@ -30,7 +30,14 @@ export class JointLines {
 
   /** Shows `joint` (anchors as given to its constructor; null anchors are the bodies' centres). */
   add<J extends Joint>(joint: J, localA: readonly number[] | null, localB: readonly number[] | null): J {
-    const link: Link = { joint, a: joint.a, localA: v(localA ?? [0, 0, 0]), b: joint.b, localB: v(localB ?? [0, 0, 0]), gone: false };
+    const link: Link = {
+      joint,
+      a: joint.a,
+      localA: v(localA ?? [0, 0, 0]),
+      b: joint.b,
+      localB: v(localB ?? [0, 0, 0]),
+      gone: false,
+    };
     joint.addEventListener('broken', () => (link.gone = true));
     this.links.push(link);
     if (joint.b === null) this.dots.push(link.localB.clone());

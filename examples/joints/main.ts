@@ -26,14 +26,23 @@ import { JointLines } from './links.js';
 
 const params = new URLSearchParams(window.location.search);
 const n = params.get('d') === '4' ? 4 : 3;
-const paint = (color: number): THREE.Material => createMaterial(new THREE.MeshStandardMaterial({ color, side: THREE.DoubleSide }), 0.5, 0.1);
+const paint = (color: number): THREE.Material =>
+  createMaterial(new THREE.MeshStandardMaterial({ color, side: THREE.DoubleSide }), 0.5, 0.1);
 const stone = paint(0x9aa4ae);
 const teal = paint(0x2a9d8f);
 const amber = paint(0xe9a23b);
 const plum = paint(0x8e5aa8);
 const coral = paint(0xe76f51);
 
-const settings = { chain: 'point' as 'point' | 'distance', soft: false, motorSpeed: n === 4 ? 0.8 : 1.5, maxTorque: 40, limit: 1.2, pinW: 0, sliceW: 0 };
+const settings = {
+  chain: 'point' as 'point' | 'distance',
+  soft: false,
+  motorSpeed: n === 4 ? 0.8 : 1.5,
+  maxTorque: 40,
+  limit: 1.2,
+  pinW: 0,
+  sliceW: 0,
+};
 const status = document.getElementById('status')!;
 const message = document.getElementById('message')!;
 let load = 0;
@@ -74,7 +83,9 @@ function build3(): Scene {
     scene.add(box);
     const there = previous === null ? [-2, 6, 0] : [0.2, 0, 0];
     const joint: Joint =
-      settings.chain === 'point' ? new PointJoint(box, previous, [-0.2, 0, 0], there) : new DistanceJoint(box, previous, [-0.2, 0, 0], there, { rest: 0.02 });
+      settings.chain === 'point'
+        ? new PointJoint(box, previous, [-0.2, 0, 0], there)
+        : new DistanceJoint(box, previous, [-0.2, 0, 0], there, { rest: 0.02 });
     // a spring of 8 Hz, damping ratio 0.7 (set before addConstraint: it becomes an option)
     if (settings.soft) joint.setSoftness(8, 0.7);
     scene.addConstraint(lines.add(joint, [-0.2, 0, 0], there));
@@ -142,7 +153,10 @@ function build4(): Scene {
   shadow.frustumCulled = false;
   scene.add(dot, shadow);
   hinge = scene.addConstraint(
-    new HingeJoint(base, swing, [0, HINGE_4D[1] - 1.5, 0, 0], [-1.2, 0, 0, 0], { plane: 2 }).setMotor(settings.motorSpeed, settings.maxTorque),
+    new HingeJoint(base, swing, [0, HINGE_4D[1] - 1.5, 0, 0], [-1.2, 0, 0, 0], { plane: 2 }).setMotor(
+      settings.motorSpeed,
+      settings.maxTorque,
+    ),
   );
   // the pin: a hypercube kept at w = pinW with its three w-planes locked, free in x, y, z
   const body = new HyperBoxMesh([0.4, 0.4, 0.4, 0.4], teal, 1);
@@ -207,21 +221,41 @@ if (n === 3) {
   const rebuild = (): void => demo.setScene(build3());
   gui.add(settings, 'chain', ['point', 'distance']).name('chain joints').onChange(rebuild);
   gui.add(settings, 'soft').name('soft chain').onChange(rebuild);
-  gui.add(settings, 'limit', 0.1, 3, 0.05).name('door limit (rad)').onChange((v: number) => hinge?.setLimits(-v, v));
+  gui
+    .add(settings, 'limit', 0.1, 3, 0.05)
+    .name('door limit (rad)')
+    .onChange((v: number) => hinge?.setLimits(-v, v));
 }
-gui.add(settings, 'motorSpeed', -4, 4, 0.1).name('motor (rad/s)').onChange(() => hinge?.setMotor(settings.motorSpeed, settings.maxTorque));
-gui.add(settings, 'maxTorque', 0, 200, 1).name('motor torque (N·m)').onChange(() => hinge?.setMotor(settings.motorSpeed, settings.maxTorque));
+gui
+  .add(settings, 'motorSpeed', -4, 4, 0.1)
+  .name('motor (rad/s)')
+  .onChange(() => hinge?.setMotor(settings.motorSpeed, settings.maxTorque));
+gui
+  .add(settings, 'maxTorque', 0, 200, 1)
+  .name('motor torque (N·m)')
+  .onChange(() => hinge?.setMotor(settings.motorSpeed, settings.maxTorque));
 if (n === 4) {
-  gui.add(settings, 'pinW', -1.5, 1.5, 0.01).name('pin at w').onChange((w: number) => pin?.setAnchors(null, [0, 0, 0, w]));
-  gui.add(settings, 'sliceW', -1.5, 1.5, 0.01).name('sliceW (the flat)').onChange((w: number) => {
-    demo.hook.scene.sliceW = w;
-    demo.hook.scene.refreshSlice();
-  });
+  gui
+    .add(settings, 'pinW', -1.5, 1.5, 0.01)
+    .name('pin at w')
+    .onChange((w: number) => pin?.setAnchors(null, [0, 0, 0, w]));
+  gui
+    .add(settings, 'sliceW', -1.5, 1.5, 0.01)
+    .name('sliceW (the flat)')
+    .onChange((w: number) => {
+      demo.hook.scene.sliceW = w;
+      demo.hook.scene.refreshSlice();
+    });
 }
-gui.add({ reset: () => {
-  demo.setScene(n === 4 ? build4() : build3());
-  for (const controller of gui.controllersRecursive()) controller.updateDisplay();
-} }, 'reset');
+gui.add(
+  {
+    reset: () => {
+      demo.setScene(n === 4 ? build4() : build3());
+      for (const controller of gui.controllersRecursive()) controller.updateDisplay();
+    },
+  },
+  'reset',
+);
 
 document.getElementById('explain')!.innerHTML =
   n === 3

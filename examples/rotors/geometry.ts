@@ -15,8 +15,10 @@
  * one bit.
  */
 export function hypercubeVertices(n: number, half: number): Float64Array {
-  if (!Number.isInteger(n) || n < 1 || n > 8) throw new RangeError(`hypercubeVertices: argument 'n' must be an integer in [1, 8], got ${n}`);
-  if (!Number.isFinite(half) || half <= 0) throw new RangeError(`hypercubeVertices: argument 'half' must be a positive finite number, got ${half}`);
+  if (!Number.isInteger(n) || n < 1 || n > 8)
+    throw new RangeError(`hypercubeVertices: argument 'n' must be an integer in [1, 8], got ${n}`);
+  if (!Number.isFinite(half) || half <= 0)
+    throw new RangeError(`hypercubeVertices: argument 'half' must be a positive finite number, got ${half}`);
   const count = 1 << n;
   const out = new Float64Array(count * n);
   for (let v = 0; v < count; v += 1) {
@@ -31,7 +33,8 @@ export function hypercubeVertices(n: number, half: number): Float64Array {
  * then by the axis the edge runs along.
  */
 export function hypercubeEdges(n: number): Uint16Array {
-  if (!Number.isInteger(n) || n < 1 || n > 8) throw new RangeError(`hypercubeEdges: argument 'n' must be an integer in [1, 8], got ${n}`);
+  if (!Number.isInteger(n) || n < 1 || n > 8)
+    throw new RangeError(`hypercubeEdges: argument 'n' must be an integer in [1, 8], got ${n}`);
   const count = 1 << n;
   const out = new Uint16Array(n * (count >> 1) * 2);
   let e = 0;

@@ -24,8 +24,10 @@ export class LogHistory {
   private filled = 0;
 
   constructor(series: number, capacity: number) {
-    if (!Number.isInteger(series) || series < 1 || series > 3) throw new RangeError(`LogHistory: argument 'series' must be 1, 2 or 3, got ${series}`);
-    if (!Number.isInteger(capacity) || capacity < 2) throw new RangeError(`LogHistory: argument 'capacity' must be an integer >= 2, got ${capacity}`);
+    if (!Number.isInteger(series) || series < 1 || series > 3)
+      throw new RangeError(`LogHistory: argument 'series' must be 1, 2 or 3, got ${series}`);
+    if (!Number.isInteger(capacity) || capacity < 2)
+      throw new RangeError(`LogHistory: argument 'capacity' must be an integer >= 2, got ${capacity}`);
     this.series = series;
     this.capacity = capacity;
     this.data = new Float64Array(series * capacity);

@@ -29,7 +29,11 @@ const COLORS = [0x2a9d8f, 0xe9a23b, 0x8e5aa8, 0xe76f51, 0x4d96d9, 0x8ab17d, 0xd1
 let rand = seeded(2026);
 let colour = 0;
 function material(): THREE.Material {
-  const m = new THREE.MeshStandardMaterial({ color: COLORS[colour++ % COLORS.length], flatShading: n === 4, side: THREE.DoubleSide });
+  const m = new THREE.MeshStandardMaterial({
+    color: COLORS[colour++ % COLORS.length],
+    flatShading: n === 4,
+    side: THREE.DoubleSide,
+  });
   return createMaterial(m, 0.6, 0.2);
 }
 
@@ -89,7 +93,6 @@ function drop(kind: Kind, height = 4 + rand() * 4): Mesh {
   return mesh;
 }
 
-
 /** The starting bodies: six boxes, four balls, two tori (the same at every start). */
 function populate(): void {
   rand = seeded(2026);
@@ -122,14 +125,21 @@ gui.add(actions, 'box').name(n === 4 ? 'drop a hyperbox' : 'drop a box');
 gui.add(actions, 'ball').name(n === 4 ? 'drop a hypersphere' : 'drop a ball');
 gui.add(actions, 'torus').name(n === 4 ? 'drop a 4D torus' : 'drop a torus');
 gui.add(actions, 'reset').name('start again');
-gui.add(actions, 'paused').name('pause').onChange((value: boolean) => (demo.paused = value));
+gui
+  .add(actions, 'paused')
+  .name('pause')
+  .onChange((value: boolean) => (demo.paused = value));
 
 linkSwitches({ n, to3: 'Switch to 3D', to4: 'Switch to 4D' });
 
 // --- the ruler (4D) ---------------------------------------------------------------------------
 if (n === 4) {
   document.getElementById('explain-4')!.hidden = false;
-  const slider = gui.add(actions, 'sliceW', -2.5, 2.5, 0.01).decimals(2).name('sliceW').onChange((w: number) => setSlice(w));
+  const slider = gui
+    .add(actions, 'sliceW', -2.5, 2.5, 0.01)
+    .decimals(2)
+    .name('sliceW')
+    .onChange((w: number) => setSlice(w));
   const setSlice = (w: number): void => {
     scene.sliceW = w;
     scene.refreshSlice();

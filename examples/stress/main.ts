@@ -13,14 +13,21 @@ const n = params.get('d') === '4' ? 4 : 3;
 
 // in 4D the flat goes through the middle of one layer of the pile in w (the columns stand at
 // w = ±0.375 and ±1.125), so a quarter of the hypercubes are cut
-const scene = new Scene({ dimensions: n, gravity: n === 4 ? [0, -9.81, 0, 0] : [0, -9.81, 0], worker: wantsWorker(), sliceW: n === 4 ? 0.375 : 0 });
+const scene = new Scene({
+  dimensions: n,
+  gravity: n === 4 ? [0, -9.81, 0, 0] : [0, -9.81, 0],
+  worker: wantsWorker(),
+  sliceW: n === 4 ? 0.375 : 0,
+});
 dressScene(scene);
 const floor = createMaterial(new THREE.MeshStandardMaterial({ color: 0x9aa4ae }), 0.6, 0);
 const ground = new THREE.BoxGeometry(40, 0.2, 40).translate(0, -0.1, 0);
 scene.add(n === 4 ? new HyperPlaneMesh([0, 1, 0, 0], 0, floor, ground) : new PlaneMesh(ground, floor, [0, 1, 0], 0));
 
 // one geometry and a few materials shared by every box (a 4D body owns its cut's geometry)
-const shades = [0x2a9d8f, 0x3aa99b, 0x4db6a8, 0x249082].map((c) => createMaterial(new THREE.MeshStandardMaterial({ color: c }), 0.5, 0));
+const shades = [0x2a9d8f, 0x3aa99b, 0x4db6a8, 0x249082].map((c) =>
+  createMaterial(new THREE.MeshStandardMaterial({ color: c }), 0.5, 0),
+);
 const cube = new THREE.BoxGeometry(0.5, 0.5, 0.5);
 const bodies: Mesh[] = [];
 const columns = n === 4 ? 4 : 10;
@@ -32,7 +39,11 @@ for (let layer = 0; layer < layers; layer += 1) {
         const material = shades[(i + j + layer) % shades.length]!;
         // columns a little apart and each box a little turned, so the pile tumbles as it lands
         const jitter = ((i * 7 + j * 13 + layer * 5 + k * 3) % 11) / 11 - 0.5;
-        const p = [(i - (columns - 1) / 2) * 0.75 + 0.1 * jitter, 0.4 + layer * 0.8, (j - (columns - 1) / 2) * 0.75 - 0.1 * jitter];
+        const p = [
+          (i - (columns - 1) / 2) * 0.75 + 0.1 * jitter,
+          0.4 + layer * 0.8,
+          (j - (columns - 1) / 2) * 0.75 - 0.1 * jitter,
+        ];
         if (n === 4) p.push((k - (columns - 1) / 2) * 0.75);
         const body = n === 4 ? new HyperBoxMesh([0.25, 0.25, 0.25, 0.25], material, 1) : new BoxMesh(cube, material, 1);
         body.setPositionN(p);

@@ -67,7 +67,20 @@ worker?.addEventListener('error', (event) => {
 });
 
 function emptyProgress(order: Order): Progress {
-  return { times: [], errors: [], costs: [], worst: 0, msPerStep: 0, msPerSecond: 0, total: Math.round(order.seconds * order.knobs.rate), done: false, bodies: [], links: [], frame: [0, 1, 0, 1], failure: null };
+  return {
+    times: [],
+    errors: [],
+    costs: [],
+    worst: 0,
+    msPerStep: 0,
+    msPerSecond: 0,
+    total: Math.round(order.seconds * order.knobs.rate),
+    done: false,
+    bodies: [],
+    links: [],
+    frame: [0, 1, 0, 1],
+    failure: null,
+  };
 }
 
 function start(order: Order): void {
@@ -123,7 +136,14 @@ function drawLegend(): void {
   const rows = runs
     .map((r, i) => {
       const p = r.progress;
-      const status = p.failure !== null ? `stopped: ${p.failure}` : p.done ? 'done' : r === current ? `running ${Math.round((100 * p.times.length) / Math.max(1, p.total))} %` : 'stopped';
+      const status =
+        p.failure !== null
+          ? `stopped: ${p.failure}`
+          : p.done
+            ? 'done'
+            : r === current
+              ? `running ${Math.round((100 * p.times.length) / Math.max(1, p.total))} %`
+              : 'stopped';
       const faded = i === runs.length - 1 ? '' : ' class="faded"';
       return `<tr${faded}><td><span class="swatch" style="background:${r.colour}"></span>${r.scene}</td><td>${r.knobs.iterations}</td><td>${r.knobs.subSteps}</td><td>${rateLabel(r.knobs.rate)}</td><td>${fmtError(p.worst)}</td><td>${p.msPerStep.toFixed(3)}</td><td>${p.msPerSecond.toFixed(1)}</td><td class="status">${status}</td></tr>`;
     })
@@ -151,12 +171,10 @@ const frame = (): void => {
 
 const gui = new GUI({ container: document.getElementById('gui')!, title: 'Scene and knobs', width: 360 });
 gui.add(state, 'scene', Object.keys(SCENES));
-const presetController = gui
-  .add(state, 'preset', [...Object.keys(PRESETS), 'custom'])
-  .onChange((name: string) => {
-    if (name in PRESETS) Object.assign(state, PRESETS[name as PresetName]);
-    gui.controllersRecursive().forEach((c) => c.updateDisplay());
-  });
+const presetController = gui.add(state, 'preset', [...Object.keys(PRESETS), 'custom']).onChange((name: string) => {
+  if (name in PRESETS) Object.assign(state, PRESETS[name as PresetName]);
+  gui.controllersRecursive().forEach((c) => c.updateDisplay());
+});
 const custom = (): void => {
   state.preset = 'custom';
   presetController.updateDisplay();
@@ -166,20 +184,25 @@ gui.add(state, 'subSteps', 1, 16, 1).name('sub-steps').onChange(custom);
 gui.add(state, 'rate', RATES).name('time step').onChange(custom);
 gui.add(state, 'seconds', 1, 30, 1).name('simulated s');
 gui.add({ run: () => order() }, 'run').name('▶ run');
-gui.add({ compare: () => (Object.keys(PRESETS) as PresetName[]).forEach((name) => order(PRESETS[name])) }, 'compare').name('▶ run the three presets');
-gui.add(
-  {
-    clear: () => {
-      queue.length = 0;
-      runs.length = 0;
-      if (current !== null) current = null;
-      sweep = null;
-      if (worker !== null) worker.postMessage({ id: 0, scene: state.scene, knobs: { iterations: 1, subSteps: 1, rate: 60 }, seconds: 0 });
-      dirty = true;
+gui
+  .add({ compare: () => (Object.keys(PRESETS) as PresetName[]).forEach((name) => order(PRESETS[name])) }, 'compare')
+  .name('▶ run the three presets');
+gui
+  .add(
+    {
+      clear: () => {
+        queue.length = 0;
+        runs.length = 0;
+        if (current !== null) current = null;
+        sweep = null;
+        if (worker !== null)
+          worker.postMessage({ id: 0, scene: state.scene, knobs: { iterations: 1, subSteps: 1, rate: 60 }, seconds: 0 });
+        dirty = true;
+      },
     },
-  },
-  'clear',
-).name('clear the plots');
+    'clear',
+  )
+  .name('clear the plots');
 
 window.addEventListener('resize', () => (dirty = true));
 

@@ -243,7 +243,8 @@ export function drawTrade(canvas: HTMLCanvasElement, runs: readonly PlotRun[]): 
   xGrid(f, xt, x, (v) => `${v}`);
   title(f, 'worst error (m) against cost', 'ms per simulated s');
   eachRun(ctx, shown, ({ colour, progress: p }, newest) => {
-    const front = p.done && shown.every(({ progress: o }) => o === p || !o.done || o.msPerSecond > p.msPerSecond || o.worst > p.worst);
+    const front =
+      p.done && shown.every(({ progress: o }) => o === p || !o.done || o.msPerSecond > p.msPerSecond || o.worst > p.worst);
     ctx.fillStyle = colour;
     ctx.beginPath();
     ctx.arc(x(p.msPerSecond), y(log10(p.worst)), newest ? 6 : 5, 0, 2 * Math.PI);
@@ -295,7 +296,9 @@ export function drawView(canvas: HTMLCanvasElement, run: PlotRun | undefined): v
   for (const b of p.bodies) {
     ctx.beginPath();
     if (b.kind === 'disc') ctx.arc(X(b.x), Y(b.y), Math.max(3, b.r * scale), 0, 2 * Math.PI);
-    else for (let i = 0; i + 1 < b.points.length; i += 2) (i === 0 ? ctx.moveTo : ctx.lineTo).call(ctx, X(b.points[i]!), Y(b.points[i + 1]!));
+    else
+      for (let i = 0; i + 1 < b.points.length; i += 2)
+        (i === 0 ? ctx.moveTo : ctx.lineTo).call(ctx, X(b.points[i]!), Y(b.points[i + 1]!));
     ctx.closePath();
     ctx.fill();
     ctx.stroke();

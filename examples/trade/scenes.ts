@@ -16,7 +16,9 @@ import { Body, HalfSpace, HyperBox, HyperSphere, PointJoint, World, dims } from 
 import type { Dims, Params } from '@physin/engine';
 
 /** What the view draws of one body, in the x-y plane (the side view): a polygon or a disc. */
-export type Outline = { readonly kind: 'poly'; readonly points: number[] } | { readonly kind: 'disc'; readonly x: number; readonly y: number; readonly r: number };
+export type Outline =
+  | { readonly kind: 'poly'; readonly points: number[] }
+  | { readonly kind: 'disc'; readonly x: number; readonly y: number; readonly r: number };
 
 /** A scene to run. */
 export interface TradeScene {
@@ -82,7 +84,8 @@ function boxOutline(D: Dims, b: Body, half: readonly number[], local: Float64Arr
 /** Convex hull (monotone chain), flattened [x0, y0, x1, y1, ...]. */
 function hull(pts: [number, number][]): number[] {
   pts.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
-  const cross = (o: [number, number], a: [number, number], b: [number, number]): number => (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+  const cross = (o: [number, number], a: [number, number], b: [number, number]): number =>
+    (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
   const lower: [number, number][] = [];
   for (const p of pts) {
     while (lower.length >= 2 && cross(lower[lower.length - 2]!, lower[lower.length - 1]!, p) <= 0) lower.pop();
@@ -144,7 +147,13 @@ function chain(params: Partial<Params>, ratio: number): TradeScene {
   for (let i = 0; i < 10; i += 1) {
     const link = world.addBody(new Body(D, { shape, mass: i === 9 ? ratio : 1, position: [i + 0.5, 0, 0] }));
     const previous = links[i - 1];
-    joints.push(world.addConstraint(previous === undefined ? new PointJoint(link, null, [-0.5, 0, 0], [0, 0, 0]) : new PointJoint(previous, link, [0.5, 0, 0], [-0.5, 0, 0])));
+    joints.push(
+      world.addConstraint(
+        previous === undefined
+          ? new PointJoint(link, null, [-0.5, 0, 0], [0, 0, 0])
+          : new PointJoint(previous, link, [0.5, 0, 0], [-0.5, 0, 0]),
+      ),
+    );
     links.push(link);
   }
   return {

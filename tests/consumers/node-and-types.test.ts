@@ -23,10 +23,14 @@ const folders: string[] = [];
 
 function npmInstall(dir: string, tarballs: string[]): void {
   writeFileSync(join(dir, 'package.json'), JSON.stringify({ name: 'consumer', private: true, type: 'module' }));
-  execFileSync('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error', ...tarballs.map((t) => join(packs, t))], {
-    cwd: dir,
-    stdio: ['ignore', 'ignore', 'inherit'],
-  });
+  execFileSync(
+    'npm',
+    ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error', ...tarballs.map((t) => join(packs, t))],
+    {
+      cwd: dir,
+      stdio: ['ignore', 'ignore', 'inherit'],
+    },
+  );
 }
 
 function folder(): string {
@@ -36,7 +40,10 @@ function folder(): string {
 }
 
 beforeAll(() => {
-  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build', '--out', packs], { cwd: root, stdio: ['ignore', 'ignore', 'inherit'] });
+  execFileSync(process.execPath, [join(root, 'scripts/pack.mjs'), '--no-build', '--out', packs], {
+    cwd: root,
+    stdio: ['ignore', 'ignore', 'inherit'],
+  });
 }, 300_000);
 
 afterAll(() => {
@@ -90,7 +97,10 @@ console.log(JSON.stringify({
 }));
 `,
     );
-    const out = JSON.parse(execFileSync(process.execPath, ['server.cjs'], { cwd: dir, encoding: 'utf8' })) as Record<string, boolean>;
+    const out = JSON.parse(execFileSync(process.execPath, ['server.cjs'], { cwd: dir, encoding: 'utf8' })) as Record<
+      string,
+      boolean
+    >;
     expect(out).toEqual({ hit: true, sameTables: true, world: true, rootHasInternals: false });
   }, 120_000);
 

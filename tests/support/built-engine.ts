@@ -25,6 +25,9 @@ export function ensureBuiltEngine(): void {
   const built = join(root, 'packages/engine/dist/index.js');
   const sources = Math.max(newest(join(root, 'packages/algebra/src')), newest(join(root, 'packages/engine/src')));
   if (!existsSync(built) || statSync(built).mtimeMs < sources) {
-    execFileSync('npx', ['--yes', 'pnpm@12.21.0', '-r', '--filter', './packages/**', 'run', 'build'], { cwd: root, stdio: 'pipe' });
+    execFileSync('npx', ['--yes', 'pnpm@12.21.0', '-r', '--filter', './packages/**', 'run', 'build'], {
+      cwd: root,
+      stdio: 'pipe',
+    });
   }
 }

@@ -42,10 +42,11 @@ export function planeIndexOf(n: number, i: number, j: number): number {
 /** The pair (i, j) of plane index p in n dimensions. */
 export function planePair(n: number, p: number): [number, number] {
   let q = 0;
-  for (let i = 0; i < n; i += 1) for (let j = i + 1; j < n; j += 1) {
-    if (q === p) return [i, j];
-    q += 1;
-  }
+  for (let i = 0; i < n; i += 1)
+    for (let j = i + 1; j < n; j += 1) {
+      if (q === p) return [i, j];
+      q += 1;
+    }
   throw new RangeError(`no plane ${p} in ${n} dimensions`);
 }
 

@@ -65,7 +65,9 @@ export function addBall(
     angularVelocity?: ArrayLike<number>;
   } = {},
 ): Body {
-  return world.addBody(new Body(dims(world.n), { shape: HyperSphere(dims(world.n), radius), mass: options.mass ?? 1, position, ...options }));
+  return world.addBody(
+    new Body(dims(world.n), { shape: HyperSphere(dims(world.n), radius), mass: options.mass ?? 1, position, ...options }),
+  );
 }
 
 /** Steps the world `steps` times at dt, calling `each(stepIndex)` after every step (1-based). */

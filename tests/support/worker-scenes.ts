@@ -20,9 +20,23 @@ export function build4D(host: WorldHost): { boxes: number[]; hinge: number; soft
   host.addBody({ shape: { kind: 'sphere', radius: 0.3 }, mass: 0.5, position: [0.2, 2.5, 0, 0.1], velocity: [0.5, 0, 0, 0] });
   host.addBody({ shape: { kind: 'torus', majorRadius: 0.6, minorRadius: 0.2, plane: [0, 2] }, mass: 2, position: [2, 1, 0, 0] });
   const arm = host.addBody({ shape: { kind: 'box', halfExtents: [0.5, 0.1, 0.1, 0.1] }, mass: 1, position: [-2, 3, 0, 0] });
-  const hinge = host.addJoint({ kind: 'hinge', a: boxes[0]!, b: arm, localA: [0, 0.3, 0, 0], localB: [-0.5, 0, 0, 0], options: { plane: 2 } });
+  const hinge = host.addJoint({
+    kind: 'hinge',
+    a: boxes[0]!,
+    b: arm,
+    localA: [0, 0.3, 0, 0],
+    localB: [-0.5, 0, 0, 0],
+    options: { plane: 2 },
+  });
   const bob = host.addBody({ shape: { kind: 'sphere', radius: 0.2 }, mass: 1, position: [3, 4, 0, 0.2] });
-  const soft = host.addJoint({ kind: 'point', a: bob, b: null, localA: [0, 0, 0, 0], localB: [3, 5, 0, 0], options: { hertz: 4, damping: 0.5 } });
+  const soft = host.addJoint({
+    kind: 'point',
+    a: bob,
+    b: null,
+    localA: [0, 0, 0, 0],
+    localB: [3, 5, 0, 0],
+    options: { hertz: 4, damping: 0.5 },
+  });
   return { boxes, hinge, soft };
 }
 
@@ -41,7 +55,8 @@ export function script4D(host: WorldHost, f: number, s: { boxes: number[]; hinge
 export function build3D(host: WorldHost): number[] {
   host.addBody({ shape: { kind: 'halfspace', normal: [0, 1, 0], offset: 0 }, mass: 0 });
   const ids: number[] = [];
-  for (let i = 0; i < 4; i += 1) ids.push(host.addBody({ shape: { kind: 'box', halfExtents: [0.5, 0.5, 0.5] }, mass: 1, position: [0, 0.5 + i * 1.0, 0] }));
+  for (let i = 0; i < 4; i += 1)
+    ids.push(host.addBody({ shape: { kind: 'box', halfExtents: [0.5, 0.5, 0.5] }, mass: 1, position: [0, 0.5 + i * 1.0, 0] }));
   ids.push(host.addBody({ shape: { kind: 'sphere', radius: 0.25 }, mass: 0.3, position: [-4, 1.5, 0], velocity: [8, 1, 0] }));
   const a = host.addBody({ shape: { kind: 'box', halfExtents: [0.2, 0.2, 0.2] }, mass: 1, position: [3, 4, 0] });
   const b = host.addBody({ shape: { kind: 'box', halfExtents: [0.2, 0.2, 0.2] }, mass: 1, position: [4, 4, 0] });
@@ -52,7 +67,13 @@ export function build3D(host: WorldHost): number[] {
 }
 
 /** The bytes of a report's body, collision and id sections, as hex. */
-export function reportBytes(r: { bodies: Float32Array; collisions: Float32Array; broken: Int32Array; slept: Int32Array; woke: Int32Array }): string {
+export function reportBytes(r: {
+  bodies: Float32Array;
+  collisions: Float32Array;
+  broken: Int32Array;
+  slept: Int32Array;
+  woke: Int32Array;
+}): string {
   const hex = (a: Float32Array | Int32Array): string => Buffer.from(a.buffer, a.byteOffset, a.byteLength).toString('hex');
   return `${hex(r.bodies)}|${hex(r.collisions)}|${hex(r.broken)}|${hex(r.slept)}|${hex(r.woke)}`;
 }

@@ -103,12 +103,7 @@ export function matrixToBivector(D: Dims, out: Float64Array, M: ArrayLike<number
  * out = the bivector of the matrix commutator Ω_A Ω_B − Ω_B Ω_A (in 3D, with the dictionary
  * ω_yz = ω_x, ω_xz = −ω_y, ω_xy = ω_z, this is a cross product). `out` may alias A or B.
  */
-export function bivectorCommutator(
-  D: Dims,
-  out: Float64Array,
-  A: ArrayLike<number>,
-  B: ArrayLike<number>,
-): Float64Array {
+export function bivectorCommutator(D: Dims, out: Float64Array, A: ArrayLike<number>, B: ArrayLike<number>): Float64Array {
   const fn = 'bivectorCommutator';
   checkDims(D, fn);
   checkOutBivector(D, 'out', out, fn);

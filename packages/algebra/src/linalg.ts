@@ -127,12 +127,7 @@ const JACOBI_MAX_SWEEPS = 100;
  * floating point, not a tolerance of the caller.
  * @throws TypeError/RangeError on a bad size, wrong lengths or non-finite entries.
  */
-export function symmetricEigen(
-  n: number,
-  outValues: Float64Array,
-  outVectors: Float64Array,
-  A: ArrayLike<number>,
-): Float64Array {
+export function symmetricEigen(n: number, outValues: Float64Array, outVectors: Float64Array, A: ArrayLike<number>): Float64Array {
   const fn = 'symmetricEigen';
   checkSize(n, fn);
   checkOut('outValues', outValues, n, `${n} eigenvalues`, fn);
@@ -173,9 +168,7 @@ export function symmetricEigenUnchecked(
         const theta = (a[q * n + q]! - a[p * n + p]!) / (2 * apq);
         // t = tan of the rotation angle, the smaller root (stable); 1/(2θ) when θ² would overflow.
         const t =
-          Math.abs(theta) > 1e150
-            ? 1 / (2 * theta)
-            : (theta >= 0 ? 1 : -1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
+          Math.abs(theta) > 1e150 ? 1 / (2 * theta) : (theta >= 0 ? 1 : -1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
         const c = 1 / Math.sqrt(t * t + 1);
         const s = t * c;
         for (let r = 0; r < n; r += 1) {

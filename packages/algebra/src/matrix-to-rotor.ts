@@ -77,12 +77,7 @@ function mulScalarBivectorLeft(D: Dims, out: Float64Array, a: Float64Array, b: F
  * untouched, when the reflection count is odd (det M = −1). The result's overall sign is
  * arbitrary (R and −R are the same rotation). `out` may not alias `M`. Allocates nothing.
  */
-export function matrixToRotorUnchecked(
-  D: Dims,
-  out: Float64Array,
-  M: ArrayLike<number>,
-  s: MatrixToRotorScratch,
-): boolean {
+export function matrixToRotorUnchecked(D: Dims, out: Float64Array, M: ArrayLike<number>, s: MatrixToRotorScratch): boolean {
   const { n, r, k, planeI, planeJ, reverseSign } = D;
   const { w, fixed, u, pending, v, t, e } = s;
   for (let i = 0; i < n * n; i += 1) w[i] = M[i]!;

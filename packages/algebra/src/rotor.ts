@@ -72,12 +72,7 @@ export function rotorApplyVector(D: Dims, out: Float64Array, R: ArrayLike<number
 }
 
 /** out = R~ v R, the vector v turned by the inverse of R (world → body frame). `out` may alias v. */
-export function rotorApplyVectorInverse(
-  D: Dims,
-  out: Float64Array,
-  R: ArrayLike<number>,
-  v: ArrayLike<number>,
-): Float64Array {
+export function rotorApplyVectorInverse(D: Dims, out: Float64Array, R: ArrayLike<number>, v: ArrayLike<number>): Float64Array {
   const fn = 'rotorApplyVectorInverse';
   checkDims(D, fn);
   checkOutVector(D, 'out', out, fn);
@@ -87,12 +82,7 @@ export function rotorApplyVectorInverse(
 }
 
 /** out = R B R~, the bivector B turned by R (body → world frame). `out` may alias B. */
-export function rotorApplyBivector(
-  D: Dims,
-  out: Float64Array,
-  R: ArrayLike<number>,
-  B: ArrayLike<number>,
-): Float64Array {
+export function rotorApplyBivector(D: Dims, out: Float64Array, R: ArrayLike<number>, B: ArrayLike<number>): Float64Array {
   const fn = 'rotorApplyBivector';
   checkDims(D, fn);
   checkOutBivector(D, 'out', out, fn);
@@ -102,12 +92,7 @@ export function rotorApplyBivector(
 }
 
 /** out = R~ B R, the bivector B turned by the inverse of R (world → body frame). `out` may alias B. */
-export function rotorApplyBivectorInverse(
-  D: Dims,
-  out: Float64Array,
-  R: ArrayLike<number>,
-  B: ArrayLike<number>,
-): Float64Array {
+export function rotorApplyBivectorInverse(D: Dims, out: Float64Array, R: ArrayLike<number>, B: ArrayLike<number>): Float64Array {
   const fn = 'rotorApplyBivectorInverse';
   checkDims(D, fn);
   checkOutBivector(D, 'out', out, fn);

@@ -45,9 +45,7 @@ export function checkArray(
 ): asserts value is ArrayLike<number> {
   if (!isArrayLike(value) || value.length !== length) {
     const got = isArrayLike(value) ? `length ${value.length}` : describe(value);
-    throw new TypeError(
-      `${prefix(fn)}argument '${name}' must be a Float64Array-like of length ${length} (${what}), got ${got}`,
-    );
+    throw new TypeError(`${prefix(fn)}argument '${name}' must be a Float64Array-like of length ${length} (${what}), got ${got}`);
   }
   checkFinite(name, value, fn);
 }
@@ -57,13 +55,7 @@ export function checkArray(
  * argument (results are always written into Float64Array storage). TypeError otherwise. The
  * contents are not checked: an output may hold anything before it is written.
  */
-export function checkOut(
-  name: string,
-  value: unknown,
-  length: number,
-  what: string,
-  fn?: string,
-): asserts value is Float64Array {
+export function checkOut(name: string, value: unknown, length: number, what: string, fn?: string): asserts value is Float64Array {
   if (!(value instanceof Float64Array) || value.length !== length) {
     throw new TypeError(
       `${prefix(fn)}argument '${name}' must be a Float64Array of length ${length} (${what}), got ${describe(value)}`,
@@ -79,9 +71,7 @@ export function checkFinite(name: string, arr: ArrayLike<number>, fn?: string): 
   for (let i = 0; i < arr.length; i += 1) {
     const x = arr[i];
     if (typeof x !== 'number' || !Number.isFinite(x)) {
-      throw new RangeError(
-        `${prefix(fn)}argument '${name}' must contain only finite numbers, got ${String(x)} at index ${i}`,
-      );
+      throw new RangeError(`${prefix(fn)}argument '${name}' must contain only finite numbers, got ${String(x)} at index ${i}`);
     }
   }
 }

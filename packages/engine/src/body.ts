@@ -94,17 +94,7 @@ export const MOTION_STATIC = 2;
 const motionOf: Record<BodyType, Motion> = { dynamic: MOTION_DYNAMIC, kinematic: MOTION_KINEMATIC, static: MOTION_STATIC };
 const typeOf: readonly BodyType[] = ['dynamic', 'kinematic', 'static'];
 
-const OPTION_NAMES = new Set([
-  'shape',
-  'mass',
-  'type',
-  'position',
-  'rotor',
-  'velocity',
-  'angularVelocity',
-  'material',
-  'name',
-]);
+const OPTION_NAMES = new Set(['shape', 'mass', 'type', 'position', 'rotor', 'velocity', 'angularVelocity', 'material', 'name']);
 
 let nextBodyId = 1;
 
@@ -199,7 +189,14 @@ function checkSumBounded(
  * every component (or, for one already beyond it, does not grow): a force on a light body must
  * not give a step a velocity or position that overflows.
  */
-function checkAcceleration(fn: string, name: string, label: string, base: Float64Array, add: ArrayLike<number>, invMass: number): void {
+function checkAcceleration(
+  fn: string,
+  name: string,
+  label: string,
+  base: Float64Array,
+  add: ArrayLike<number>,
+  invMass: number,
+): void {
   const max = inputLimits.maxAcceleration;
   for (let i = 0; i < base.length; i += 1) {
     const next = Math.abs((base[i]! + add[i]!) * invMass);
@@ -363,7 +360,9 @@ export class Body {
     const fn = 'new Body';
     checkDims(D, fn);
     if (options === null || typeof options !== 'object') {
-      throw new TypeError(`${fn}: argument 'options' must be an object with at least 'shape', got ${options === null ? 'null' : typeof options}`);
+      throw new TypeError(
+        `${fn}: argument 'options' must be an object with at least 'shape', got ${options === null ? 'null' : typeof options}`,
+      );
     }
     for (const key of Object.keys(options)) {
       if (!OPTION_NAMES.has(key)) {
@@ -378,7 +377,9 @@ export class Body {
       typeof (shape as { kind?: unknown }).kind !== 'string' ||
       typeof (shape as { massProperties?: unknown }).massProperties !== 'function'
     ) {
-      throw new TypeError(`${fn}: option 'shape' must be a shape (HyperBox, HyperSphere, HalfSpace, ...), got ${shape === null ? 'null' : typeof shape}`);
+      throw new TypeError(
+        `${fn}: option 'shape' must be a shape (HyperBox, HyperSphere, HalfSpace, ...), got ${shape === null ? 'null' : typeof shape}`,
+      );
     }
     if (shape.n !== null && shape.n !== n) {
       throw new RangeError(`${fn}: option 'shape' was built for n = ${shape.n} but the body's D has n = ${n}`);
@@ -440,9 +441,13 @@ export class Body {
       checkComponents(fn, "option 'angularVelocity'", options.angularVelocity, lim.maxAngularVelocity, 'rad/s');
     }
     if (type === 'static') {
-      if ((options.velocity !== undefined && !isZero(options.velocity)) ||
-          (options.angularVelocity !== undefined && !isZero(options.angularVelocity))) {
-        throw new RangeError(`${fn}: a static body cannot have a velocity; use type 'kinematic' for a body that moves by its velocity`);
+      if (
+        (options.velocity !== undefined && !isZero(options.velocity)) ||
+        (options.angularVelocity !== undefined && !isZero(options.angularVelocity))
+      ) {
+        throw new RangeError(
+          `${fn}: a static body cannot have a velocity; use type 'kinematic' for a body that moves by its velocity`,
+        );
       }
     }
     const material = checkMaterial(options.material, fn);
@@ -490,7 +495,8 @@ export class Body {
     if (frameOffset !== undefined && !isZero(frameOffset)) {
       // Centre of mass seen from the described origin, in the body (principal) frame.
       comOffset = new Float64Array(n);
-      if (frameRotor !== undefined) K.applyVectorInverse(comOffset, Float64Array.from(frameRotor), Float64Array.from(frameOffset));
+      if (frameRotor !== undefined)
+        K.applyVectorInverse(comOffset, Float64Array.from(frameRotor), Float64Array.from(frameOffset));
       else comOffset.set(frameOffset);
     }
     this.comOffset = comOffset;
@@ -823,7 +829,10 @@ export class Body {
       angularVelocityFromMomentum(this.D, w, this.rView, this.invInertia, L, scratch.tmp);
       for (let p = 0; p < this.D.k; p += 1) if (!Number.isFinite(w[p]!)) finite = false;
     }
-    if (!finite) throw new RangeError(`${fn}: arguments 'j' and 'r' would make ${this.label}'s angular momentum non-finite; nothing was changed`);
+    if (!finite)
+      throw new RangeError(
+        `${fn}: arguments 'j' and 'r' would make ${this.label}'s angular momentum non-finite; nothing was changed`,
+      );
     const maxW = inputLimits.maxAngularVelocity;
     for (let p = 0; p < this.D.k; p += 1) {
       const a = Math.abs(w[p]!);
@@ -936,7 +945,9 @@ export class Body {
     next.set(R);
     const defect = K.defect(next);
     if (!(defect <= ROTOR_INPUT_TOLERANCE)) {
-      throw new RangeError(`${fn}: argument 'R' must be a unit rotor (defect |R R~ - 1| <= ${ROTOR_INPUT_TOLERANCE}), got defect ${defect}`);
+      throw new RangeError(
+        `${fn}: argument 'R' must be a unit rotor (defect |R R~ - 1| <= ${ROTOR_INPUT_TOLERANCE}), got defect ${defect}`,
+      );
     }
     const origin = this.comOffset === null ? null : this.getPositionN(scratchFor(this.D).origin);
     const frame = this.shape.frameRotor;
@@ -959,7 +970,9 @@ export class Body {
   setMaterial(material: Partial<Material>): this {
     const fn = 'Body.setMaterial';
     if (material === null || typeof material !== 'object') {
-      throw new TypeError(`${fn}: argument 'material' must be an object { friction?, restitution? }, got ${material === null ? 'null' : typeof material}`);
+      throw new TypeError(
+        `${fn}: argument 'material' must be an object { friction?, restitution? }, got ${material === null ? 'null' : typeof material}`,
+      );
     }
     this.materialValue = checkMaterial({ ...this.materialValue, ...material }, fn);
     this.owner?.onMaterialChanged(this);
@@ -1001,7 +1014,9 @@ export class Body {
     momentumFromAngularVelocity(this.D, L, this.rView, mp.inertia, this.wView, scratch.tmp);
     for (let p = 0; p < this.D.k; p += 1) {
       if (!Number.isFinite(L[p]!)) {
-        throw new RangeError(`${fn}: argument 'm' would make ${this.label}'s angular momentum non-finite (L = I ω); nothing was changed`);
+        throw new RangeError(
+          `${fn}: argument 'm' would make ${this.label}'s angular momentum non-finite (L = I ω); nothing was changed`,
+        );
       }
     }
     if (this.motion === MOTION_STATIC) this.motion = MOTION_DYNAMIC;
@@ -1056,7 +1071,9 @@ function checkMaterial(material: unknown, fn: string): Material {
     return Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
   }
   if (material === null || typeof material !== 'object') {
-    throw new TypeError(`${fn}: option 'material' must be an object { friction, restitution }, got ${material === null ? 'null' : typeof material}`);
+    throw new TypeError(
+      `${fn}: option 'material' must be an object { friction, restitution }, got ${material === null ? 'null' : typeof material}`,
+    );
   }
   const m = material as Record<string, unknown>;
   for (const key of Object.keys(m)) {

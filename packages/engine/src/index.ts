@@ -31,8 +31,29 @@ export { HyperSphere } from './shapes/sphere.js';
 export { HalfSpace } from './shapes/half-space.js';
 export { HyperTorus } from './shapes/torus.js';
 export { ConvexMesh } from './shapes/convex-mesh.js';
-export type { AnyShape, BoxShape, SphereShape, HalfSpaceShape, TorusShape, ConvexMeshShape, ConvexMeshOptions, ConvexMeshTriangleOptions, TriangleMergeOptions, MassProperties, Shape, ShapeKind } from './shapes/index.js';
+export type {
+  AnyShape,
+  BoxShape,
+  SphereShape,
+  HalfSpaceShape,
+  TorusShape,
+  ConvexMeshShape,
+  ConvexMeshOptions,
+  ConvexMeshTriangleOptions,
+  TriangleMergeOptions,
+  MassProperties,
+  Shape,
+  ShapeKind,
+} from './shapes/index.js';
 export { dims } from '@physin/algebra';
 export type { Dims } from '@physin/algebra';
 export { Joint, PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint } from './joints/index.js';
-export type { JointOptions, JointBrokenEvent, JointBrokenListener, DistanceJointOptions, DistanceMode, HingeJointOptions, SubspaceJointOptions } from './joints/index.js';
+export type {
+  JointOptions,
+  JointBrokenEvent,
+  JointBrokenListener,
+  DistanceJointOptions,
+  DistanceMode,
+  HingeJointOptions,
+  SubspaceJointOptions,
+} from './joints/index.js';

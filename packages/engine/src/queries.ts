@@ -25,7 +25,8 @@ export interface WorldRayHit {
 }
 
 function checkWorld(fn: string, world: unknown): WorldBase {
-  if (!(world instanceof WorldBase)) throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
+  if (!(world instanceof WorldBase))
+    throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
   return world;
 }
 
@@ -43,7 +44,12 @@ function checkWorld(fn: string, world: unknown): WorldBase {
  * @throws TypeError / RangeError for a world that is not a World, an origin or direction of the
  *   wrong length or non-finite, a zero direction, or a negative or non-finite maxDistance.
  */
-export function castRay(world: WorldBase, origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number): WorldRayHit | null {
+export function castRay(
+  world: WorldBase,
+  origin: ArrayLike<number>,
+  direction: ArrayLike<number>,
+  maxDistance: number,
+): WorldRayHit | null {
   const fn = 'castRay';
   const w = checkWorld(fn, world);
   checkVector(w.D, 'origin', origin, fn);
@@ -52,7 +58,8 @@ export function castRay(world: WorldBase, origin: ArrayLike<number>, direction: 
   for (let i = 0; i < w.n; i += 1) len += direction[i]! * direction[i]!;
   if (!(len > 0)) throw new RangeError(`${fn}: argument 'direction' must be a non-zero vector`);
   checkNumber('maxDistance', maxDistance, fn);
-  if (!(maxDistance >= 0)) throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
+  if (!(maxDistance >= 0))
+    throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
   const { broadphase, bodyOfProxy } = w.queryParts();
   const source: RayCastSource = {
     shapeOf: (id) => bodyOfProxy[id]!.shape as unknown as QueryShape,
@@ -79,7 +86,8 @@ export function queryBox(world: WorldBase, min: ArrayLike<number>, max: ArrayLik
   checkVector(w.D, 'min', min, fn);
   checkVector(w.D, 'max', max, fn);
   for (let i = 0; i < w.n; i += 1) {
-    if (min[i]! > max[i]!) throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
+    if (min[i]! > max[i]!)
+      throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
   }
   const { broadphase, bodyOfProxy } = w.queryParts();
   const list = createIdList();

@@ -11,7 +11,10 @@ import type { WorldOptions } from './world.js';
 
 /** The tables of `@physin/engine/3d`: n = 3 only. */
 function tables3(n: number): Dims {
-  if (n !== 3) throw new RangeError(`new World: option 'dimensions' must be 3 in @physin/engine/3d, got ${n}; import @physin/engine for other dimensions`);
+  if (n !== 3)
+    throw new RangeError(
+      `new World: option 'dimensions' must be 3 in @physin/engine/3d, got ${n}; import @physin/engine for other dimensions`,
+    );
   return dims3();
 }
 

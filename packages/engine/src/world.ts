@@ -133,7 +133,12 @@ const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
 
 /** Whether `value` is a joint (the world does not import the Joint class: see Joint.createSolver). */
 function isJoint(value: unknown): value is Joint {
-  return typeof value === 'object' && value !== null && typeof (value as Joint).createSolver === 'function' && typeof (value as Joint).buildRows === 'function';
+  return (
+    typeof value === 'object' &&
+    value !== null &&
+    typeof (value as Joint).createSolver === 'function' &&
+    typeof (value as Joint).buildRows === 'function'
+  );
 }
 
 /** Throws the error of a bad `dt` (TypeError if not a number, RangeError otherwise). */
@@ -319,7 +324,9 @@ export class WorldBase {
   setParams(partial: Partial<Params>): this {
     const merged = mergeParams(this.currentParams, partial, 'World.setParams');
     if (merged.lengthUnit !== this.currentParams.lengthUnit) {
-      throw new RangeError(`World.setParams: parameter 'lengthUnit' is set when the world is built (new World); got ${merged.lengthUnit}, the world has ${this.currentParams.lengthUnit}`);
+      throw new RangeError(
+        `World.setParams: parameter 'lengthUnit' is set when the world is built (new World); got ${merged.lengthUnit}, the world has ${this.currentParams.lengthUnit}`,
+      );
     }
     this.currentParams = merged;
     this.stepParams = scaledParams(merged);
@@ -401,7 +408,8 @@ export class WorldBase {
   advance(elapsed: number, maxSteps = 4): number {
     const fn = 'World.advance';
     checkNumber('elapsed', elapsed, fn);
-    if (!(elapsed >= 0) || elapsed === Infinity) throw new RangeError(`${fn}: argument 'elapsed' must be a finite number >= 0 (s), got ${elapsed}`);
+    if (!(elapsed >= 0) || elapsed === Infinity)
+      throw new RangeError(`${fn}: argument 'elapsed' must be a finite number >= 0 (s), got ${elapsed}`);
     checkInteger('maxSteps', maxSteps, 1, Number.MAX_SAFE_INTEGER, fn);
     const h = this.currentParams.fixedTimeStep;
     const c = this.clock;
@@ -483,7 +491,9 @@ export class WorldBase {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is not in this world`);
     }
     if (body.jointCount > 0) {
-      throw new RangeError(`${fn}: argument 'body' (${body.label}) is held by ${body.jointCount} joint(s) of this world; remove them first (World.removeConstraint)`);
+      throw new RangeError(
+        `${fn}: argument 'body' (${body.label}) is held by ${body.jointCount} joint(s) of this world; remove them first (World.removeConstraint)`,
+      );
     }
     // A hole, closed by compact() before the list is next iterated (the type says Body: no code
     // reads the list between here and there).
@@ -514,14 +524,17 @@ export class WorldBase {
   addConstraint<J extends Joint>(joint: J): J {
     const fn = 'World.addConstraint';
     if (!isJoint(joint)) {
-      throw new TypeError(`${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`);
+      throw new TypeError(
+        `${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
+      );
     }
     if (joint.D.n !== this.n) {
       throw new RangeError(`${fn}: argument 'joint' has n = ${joint.D.n} but the world has n = ${this.n}`);
     }
     if (joint.brokenFlag) throw new RangeError(`${fn}: argument 'joint' broke; build a new joint`);
     if (joint.owner === this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is already in this world`);
-    if (joint.owner !== null) throw new RangeError(`${fn}: argument 'joint' already belongs to another world; remove it there first`);
+    if (joint.owner !== null)
+      throw new RangeError(`${fn}: argument 'joint' already belongs to another world; remove it there first`);
     if (joint.a.owner !== this.owner) {
       throw new RangeError(`${fn}: body 'a' (${joint.a.label}) of the joint is not in this world; add it first (World.addBody)`);
     }

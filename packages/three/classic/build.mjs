@@ -28,9 +28,15 @@ async function iife(entry, name, fileName, options = {}, define = {}) {
 await iife('./three.ts', 'THREE', 'three.js');
 await iife('./worker.ts', 'PhysiNWorker', 'physin_worker.js');
 const workerSource = readFileSync(`${outDir}/physin_worker.js`, 'utf8');
-await iife('./physin.ts', 'PhysiN', 'physin.js', {
-  rolldownOptions: { external: ['three'], output: { globals: { three: 'THREE' } } },
-}, { __PHYSIN_WORKER_SOURCE__: JSON.stringify(workerSource) });
+await iife(
+  './physin.ts',
+  'PhysiN',
+  'physin.js',
+  {
+    rolldownOptions: { external: ['three'], output: { globals: { three: 'THREE' } } },
+  },
+  { __PHYSIN_WORKER_SOURCE__: JSON.stringify(workerSource) },
+);
 // the module build's own worker (new URL('./worker.js', import.meta.url)) is never started by
 // physin.js, which always names its worker: drop the chunk the bundler emitted for it
 rmSync(`${outDir}/assets`, { recursive: true, force: true });

@@ -24,7 +24,8 @@ function isArrayLike(value: unknown): value is ArrayLike<unknown> {
  * copy, so that later changes to the caller's array do not reach a queued command.
  */
 export function numbers(where: string, name: string, value: unknown, length: number | null, what = 'numbers'): Float64Array {
-  if (!isArrayLike(value)) throw new TypeError(`${where}: argument '${name}' must be an array of ${length ?? 'n'} ${what}, got ${describe(value)}`);
+  if (!isArrayLike(value))
+    throw new TypeError(`${where}: argument '${name}' must be an array of ${length ?? 'n'} ${what}, got ${describe(value)}`);
   if (length !== null && value.length !== length) {
     throw new RangeError(`${where}: argument '${name}' must have ${length} ${what}, got ${value.length}`);
   }
@@ -43,7 +44,8 @@ export function numbers(where: string, name: string, value: unknown, length: num
 export function finite(where: string, name: string, value: unknown, min?: number, what = 'number'): number {
   if (typeof value !== 'number') throw new TypeError(`${where}: argument '${name}' must be a ${what}, got ${describe(value)}`);
   if (!Number.isFinite(value)) throw new RangeError(`${where}: argument '${name}' must be a finite ${what}, got ${value}`);
-  if (min !== undefined && value < min) throw new RangeError(`${where}: argument '${name}' must be a ${what} >= ${min}, got ${value}`);
+  if (min !== undefined && value < min)
+    throw new RangeError(`${where}: argument '${name}' must be a ${what} >= ${min}, got ${value}`);
   return value;
 }
 

@@ -77,7 +77,8 @@ export class HyperBoxMesh extends HyperShapeMesh {
   constructor(halfExtents: ArrayLike<number>, material?: THREE.Material | THREE.Material[], mass?: number) {
     const where = 'HyperBoxMesh';
     const he = numbers(where, 'halfExtents', halfExtents, null, 'half extents');
-    if (he.length < 2 || he.length > 8) throw new RangeError(`${where}: argument 'halfExtents' must have 2 to 8 numbers, got ${he.length}`);
+    if (he.length < 2 || he.length > 8)
+      throw new RangeError(`${where}: argument 'halfExtents' must have 2 to 8 numbers, got ${he.length}`);
     for (let i = 0; i < he.length; i += 1) positive(where, `halfExtents[${i}]`, he[i], 'half extent in m');
     const m = massOf(where, mass);
     const n = he.length;
@@ -153,10 +154,16 @@ export class HyperPlaneMesh extends HyperShapeMesh {
   private readonly normal: Float64Array;
   private readonly offset: number;
 
-  constructor(normal: ArrayLike<number>, offset: number, material?: THREE.Material | THREE.Material[], displayGeometry?: THREE.BufferGeometry) {
+  constructor(
+    normal: ArrayLike<number>,
+    offset: number,
+    material?: THREE.Material | THREE.Material[],
+    displayGeometry?: THREE.BufferGeometry,
+  ) {
     const where = 'HyperPlaneMesh';
     const N = numbers(where, 'normal', normal, null);
-    if (N.length < 2 || N.length > 8) throw new RangeError(`${where}: argument 'normal' must have 2 to 8 numbers, got ${N.length}`);
+    if (N.length < 2 || N.length > 8)
+      throw new RangeError(`${where}: argument 'normal' must have 2 to 8 numbers, got ${N.length}`);
     finite(where, 'offset', offset, undefined, 'distance in m');
     if (displayGeometry !== undefined && !(displayGeometry instanceof THREE.BufferGeometry)) {
       throw new TypeError(`${where}: argument 'displayGeometry' must be a THREE.BufferGeometry or undefined`);
@@ -172,7 +179,6 @@ export class HyperPlaneMesh extends HyperShapeMesh {
   describeShape(): ShapeDescription {
     return { kind: 'halfspace', normal: this.normal, offset: this.offset };
   }
-
 
   /** @internal Visible while the boundary meets the flat: always, unless the normal is all in w. */
   updateSlice(slice: Float64Array): void {
@@ -211,7 +217,14 @@ export class HyperTorusMesh extends HyperShapeMesh {
   /** The two body axes [i, j] of the core circle's plane. */
   readonly plane: readonly [number, number];
   private readonly slicer: TorusSlicer | null;
-  private readonly pose: { majorRadius: number; minorRadius: number; planeI: number; planeJ: number; x: Float64Array; M: Float64Array };
+  private readonly pose: {
+    majorRadius: number;
+    minorRadius: number;
+    planeI: number;
+    planeJ: number;
+    x: Float64Array;
+    M: Float64Array;
+  };
 
   constructor(
     majorRadius: number,
@@ -224,15 +237,21 @@ export class HyperTorusMesh extends HyperShapeMesh {
     const where = 'HyperTorusMesh';
     positive(where, 'majorRadius', majorRadius, 'radius in m');
     positive(where, 'minorRadius', minorRadius, 'radius in m');
-    if (options === null || typeof options !== 'object') throw new TypeError(`${where}: argument 'options' must be an object { dimensions? }`);
+    if (options === null || typeof options !== 'object')
+      throw new TypeError(`${where}: argument 'options' must be an object { dimensions? }`);
     const n = options.dimensions === undefined ? 4 : integer(where, 'options.dimensions', options.dimensions, 3, 8);
-    if (!Array.isArray(plane) || plane.length !== 2) throw new TypeError(`${where}: argument 'plane' must be two axis numbers [i, j]`);
+    if (!Array.isArray(plane) || plane.length !== 2)
+      throw new TypeError(`${where}: argument 'plane' must be two axis numbers [i, j]`);
     integer(where, 'plane[0]', plane[0], 0, n - 1);
     integer(where, 'plane[1]', plane[1], 0, n - 1);
-    if (plane[0] === plane[1]) throw new RangeError(`${where}: argument 'plane' must name two different axes, got [${plane[0]}, ${plane[1]}]`);
+    if (plane[0] === plane[1])
+      throw new RangeError(`${where}: argument 'plane' must name two different axes, got [${plane[0]}, ${plane[1]}]`);
     const m = massOf(where, mass);
     const slicer = n >= 4 ? new TorusSlicer(n) : null;
-    const geometry = slicer !== null ? sliceGeometry(slicer.maxVertices, majorRadius + minorRadius) : torusGeometry3(majorRadius, minorRadius, plane);
+    const geometry =
+      slicer !== null
+        ? sliceGeometry(slicer.maxVertices, majorRadius + minorRadius)
+        : torusGeometry3(majorRadius, minorRadius, plane);
     super(geometry, material, m, n);
     this.majorRadius = majorRadius;
     this.minorRadius = minorRadius;
@@ -272,17 +291,29 @@ export class HyperMesh extends HyperShapeMesh {
   private readonly cells: Uint32Array;
   private readonly slicer: TetraSlicer;
 
-  constructor(vertices: ArrayLike<number> | ArrayLike<ArrayLike<number>>, cells: ArrayLike<number> | ArrayLike<ArrayLike<number>>, material?: THREE.Material | THREE.Material[], mass?: number) {
+  constructor(
+    vertices: ArrayLike<number> | ArrayLike<ArrayLike<number>>,
+    cells: ArrayLike<number> | ArrayLike<ArrayLike<number>>,
+    material?: THREE.Material | THREE.Material[],
+    mass?: number,
+  ) {
     const where = 'HyperMesh';
     const flatV = numbers(where, 'vertices', flatten(vertices), null, 'coordinates');
-    if (flatV.length < 20 || flatV.length % 4 !== 0) throw new RangeError(`${where}: argument 'vertices' must hold 5 or more 4D points (4 numbers each), got ${flatV.length} numbers`);
+    if (flatV.length < 20 || flatV.length % 4 !== 0)
+      throw new RangeError(
+        `${where}: argument 'vertices' must hold 5 or more 4D points (4 numbers each), got ${flatV.length} numbers`,
+      );
     const flatC = numbers(where, 'cells', flatten(cells), null, 'vertex indices');
-    if (flatC.length < 20 || flatC.length % 4 !== 0) throw new RangeError(`${where}: argument 'cells' must hold 5 or more tetrahedra (4 indices each), got ${flatC.length} numbers`);
+    if (flatC.length < 20 || flatC.length % 4 !== 0)
+      throw new RangeError(
+        `${where}: argument 'cells' must hold 5 or more tetrahedra (4 indices each), got ${flatC.length} numbers`,
+      );
     const nv = flatV.length / 4;
     for (let i = 0; i < flatC.length; i += 1) integer(where, `cells[${i}]`, flatC[i], 0, nv - 1);
     const slicer = new TetraSlicer(flatV, flatC);
     let bound = 0;
-    for (let i = 0; i < nv; i += 1) bound = Math.max(bound, Math.hypot(flatV[4 * i]!, flatV[4 * i + 1]!, flatV[4 * i + 2]!, flatV[4 * i + 3]!));
+    for (let i = 0; i < nv; i += 1)
+      bound = Math.max(bound, Math.hypot(flatV[4 * i]!, flatV[4 * i + 1]!, flatV[4 * i + 2]!, flatV[4 * i + 3]!));
     super(sliceGeometry(slicer.maxVertices, bound), material, massOf(where, mass), 4);
     this.vertices = flatV;
     this.cells = Uint32Array.from(flatC);

@@ -43,12 +43,21 @@ export abstract class Joint extends EventDispatcher<JointEventMap> {
   protected readonly options: Record<string, unknown>;
   private readonly kind: JointDescription['kind'];
 
-  protected constructor(kind: JointDescription['kind'], a: Mesh, b: Mesh | null, localA: ArrayLike<number> | null, localB: ArrayLike<number> | null, options: JointOptions | undefined) {
+  protected constructor(
+    kind: JointDescription['kind'],
+    a: Mesh,
+    b: Mesh | null,
+    localA: ArrayLike<number> | null,
+    localB: ArrayLike<number> | null,
+    options: JointOptions | undefined,
+  ) {
     super();
     const where = `${new.target.name}`;
     if (!(a instanceof Mesh)) throw new TypeError(`${where}: argument 'a' must be a PhysiN mesh`);
-    if (b !== null && !(b instanceof Mesh)) throw new TypeError(`${where}: argument 'b' must be a PhysiN mesh or null (the world)`);
-    if (options !== undefined && (options === null || typeof options !== 'object')) throw new TypeError(`${where}: argument 'options' must be an object`);
+    if (b !== null && !(b instanceof Mesh))
+      throw new TypeError(`${where}: argument 'b' must be a PhysiN mesh or null (the world)`);
+    if (options !== undefined && (options === null || typeof options !== 'object'))
+      throw new TypeError(`${where}: argument 'options' must be an object`);
     this.kind = kind;
     this.a = a;
     this.b = b;
@@ -68,7 +77,8 @@ export abstract class Joint extends EventDispatcher<JointEventMap> {
     const b = this.b === null ? null : this.b._physiN.id;
     const where = 'Scene.addConstraint';
     if (a === null) throw new RangeError(`${where}: mesh 'a' of the ${this.constructor.name} is not in the scene; add it first`);
-    if (this.b !== null && b === null) throw new RangeError(`${where}: mesh 'b' of the ${this.constructor.name} is not in the scene; add it first`);
+    if (this.b !== null && b === null)
+      throw new RangeError(`${where}: mesh 'b' of the ${this.constructor.name} is not in the scene; add it first`);
     return {
       kind: this.kind,
       a,
@@ -136,7 +146,8 @@ export class DistanceJoint extends Joint {
 
   /** 'rod', 'rope' or 'strut'. */
   setMode(mode: DistanceMode): this {
-    if (mode !== 'rod' && mode !== 'rope' && mode !== 'strut') throw new RangeError(`DistanceJoint.setMode: argument 'mode' must be 'rod', 'rope' or 'strut', got ${String(mode)}`);
+    if (mode !== 'rod' && mode !== 'rope' && mode !== 'strut')
+      throw new RangeError(`DistanceJoint.setMode: argument 'mode' must be 'rod', 'rope' or 'strut', got ${String(mode)}`);
     return this.change('setMode', { mode }, { mode });
   }
 }

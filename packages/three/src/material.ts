@@ -18,7 +18,11 @@ export interface PhysinMaterialValues {
  * Puts `{ friction, restitution }` on `material._physiN` (read by the meshes at `scene.add`) and
  * returns the material, as Physijs's `createMaterial`.
  */
-export function createMaterial<M extends Material>(material: M, friction?: number, restitution?: number): M & {
+export function createMaterial<M extends Material>(
+  material: M,
+  friction?: number,
+  restitution?: number,
+): M & {
   /** The values the meshes read at `scene.add`. */
   _physiN: PhysinMaterialValues;
 } {

@@ -9,7 +9,13 @@
  * @module
  */
 import * as THREE from 'three';
-import { axisToBivector3, dims, quaternionToRotor, rotateInPlane as rotorRotateInPlane, rotorToQuaternion } from '@physin/algebra';
+import {
+  axisToBivector3,
+  dims,
+  quaternionToRotor,
+  rotateInPlane as rotorRotateInPlane,
+  rotorToQuaternion,
+} from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import type { BodyDescription, CommandMap, CommandName, HostId, ShapeDescription, WorldHost } from '@physin/worker';
 import { describe, finite, integer, numbers } from './checks.js';
@@ -98,7 +104,12 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
    * @param dimensions the count of dimensions, or null when it comes from the first
    * `setPositionN` or from the scene at `add`
    */
-  protected constructor(geometry: THREE.BufferGeometry, material: THREE.Material | THREE.Material[] | undefined, mass: number, dimensions: number | null) {
+  protected constructor(
+    geometry: THREE.BufferGeometry,
+    material: THREE.Material | THREE.Material[] | undefined,
+    mass: number,
+    dimensions: number | null,
+  ) {
     super(geometry, material);
     this.physics = { id: null, dimensions: null, mass };
     this._physiN = this.physics;
@@ -241,7 +252,10 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   /** Applies an impulse `j` at offset `r` from the centre of mass (world directions). */
   applyImpulse(j: VectorInput, r: VectorInput): this {
-    return this.command('applyImpulse', { impulse: this.vector('applyImpulse', 'j', j), offset: this.vector('applyImpulse', 'r', r) });
+    return this.command('applyImpulse', {
+      impulse: this.vector('applyImpulse', 'j', j),
+      offset: this.vector('applyImpulse', 'r', r),
+    });
   }
 
   /** Applies a force at the centre of mass for the next step. */
@@ -309,7 +323,10 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     const where = `${this.constructor.name}.${method}`;
     const n = this.physics.dimensions;
     if (value instanceof THREE.Vector3) {
-      if (n !== null && n > 3) throw new TypeError(`${where}: argument '${name}' must be an array of ${n} numbers in ${n} dimensions, got a THREE.Vector3`);
+      if (n !== null && n > 3)
+        throw new TypeError(
+          `${where}: argument '${name}' must be an array of ${n} numbers in ${n} dimensions, got a THREE.Vector3`,
+        );
       const out = numbers(where, name, [value.x, value.y, value.z], 3);
       return n === 2 ? out.subarray(0, 2).slice() : out;
     }
@@ -320,7 +337,10 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     const where = `${this.constructor.name}.${method}`;
     const n = this.physics.dimensions;
     if (value instanceof THREE.Vector3) {
-      if (n !== null && n > 3) throw new TypeError(`${where}: argument '${name}' must be a bivector of ${(n * (n - 1)) / 2} numbers in ${n} dimensions, got a THREE.Vector3`);
+      if (n !== null && n > 3)
+        throw new TypeError(
+          `${where}: argument '${name}' must be a bivector of ${(n * (n - 1)) / 2} numbers in ${n} dimensions, got a THREE.Vector3`,
+        );
       const axis = numbers(where, name, [value.x, value.y, value.z], 3);
       // in 2D the only plane is e01, the turn about z
       return n === 2 ? Float64Array.of(axis[2]!) : axisToBivector3(new Float64Array(3), axis);
@@ -330,7 +350,9 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   private requireX(where: string): Float64Array {
     if (this._x === null) {
-      throw new RangeError(`${where}: this ${this.constructor.name} has no count of dimensions yet; call setPositionN or add it to a scene first`);
+      throw new RangeError(
+        `${where}: this ${this.constructor.name} has no count of dimensions yet; call setPositionN or add it to a scene first`,
+      );
     }
     return this._x;
   }
@@ -353,7 +375,9 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     const id = this.physics.id;
     if (!this.position.equals(this._lastPosition)) {
       if (!Number.isFinite(this.position.x + this.position.y + this.position.z)) {
-        throw new RangeError(`${this.constructor.name}: mesh.position must be finite, got (${this.position.x}, ${this.position.y}, ${this.position.z})`);
+        throw new RangeError(
+          `${this.constructor.name}: mesh.position must be finite, got (${this.position.x}, ${this.position.y}, ${this.position.z})`,
+        );
       }
       this._x[0] = this.position.x;
       this._x[1] = this.position.y;
@@ -422,13 +446,18 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
     const q = this.quaternion;
     if (R.length === 4) {
       const len = Math.sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-      if (!(len > 0) || !Number.isFinite(len)) throw new RangeError(`${this.constructor.name}: mesh.quaternion must be a finite non-zero quaternion`);
+      if (!(len > 0) || !Number.isFinite(len))
+        throw new RangeError(`${this.constructor.name}: mesh.quaternion must be a finite non-zero quaternion`);
       const s = this.scratchQ;
-      s[0] = q.x / len; s[1] = q.y / len; s[2] = q.z / len; s[3] = q.w / len;
+      s[0] = q.x / len;
+      s[1] = q.y / len;
+      s[2] = q.z / len;
+      s[3] = q.w / len;
       quaternionToRotor(R, s);
     } else if (R.length === 2) {
       const len = Math.sqrt(q.z * q.z + q.w * q.w);
-      if (!(len > 0) || !Number.isFinite(len)) throw new RangeError(`${this.constructor.name}: mesh.quaternion must turn about z in 2D`);
+      if (!(len > 0) || !Number.isFinite(len))
+        throw new RangeError(`${this.constructor.name}: mesh.quaternion must turn about z in 2D`);
       R[0] = q.w / len;
       R[1] = -q.z / len;
     }
@@ -436,7 +465,9 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 }
 
 /** The `_physiN` material values of a three.js material (the first of an array), or null. */
-export function materialOf(material: THREE.Material | THREE.Material[] | undefined): { friction?: number; restitution?: number } | null {
+export function materialOf(
+  material: THREE.Material | THREE.Material[] | undefined,
+): { friction?: number; restitution?: number } | null {
   const m = Array.isArray(material) ? material[0] : material;
   const values = (m as { _physiN?: { friction?: number; restitution?: number } } | undefined)?._physiN;
   if (values === undefined || values === null) return null;

@@ -16,7 +16,9 @@ function massOf(where: string, mass: unknown): number {
 
 function geometryOf(where: string, geometry: unknown): THREE.BufferGeometry {
   if (!(geometry instanceof THREE.BufferGeometry)) {
-    throw new TypeError(`${where}: argument 'geometry' must be a THREE.BufferGeometry, got ${geometry === null ? 'null' : typeof geometry}`);
+    throw new TypeError(
+      `${where}: argument 'geometry' must be a THREE.BufferGeometry, got ${geometry === null ? 'null' : typeof geometry}`,
+    );
   }
   return geometry;
 }
@@ -51,7 +53,10 @@ export class BoxMesh extends Mesh {
     const s = this.scale;
     const he = [(size.x * Math.abs(s.x)) / 2, (size.y * Math.abs(s.y)) / 2, (size.z * Math.abs(s.z)) / 2].slice(0, n);
     for (const h of he) {
-      if (!(h > 0)) throw new RangeError(`BoxMesh: the geometry's bounding box times the scale must have a positive size, got half extents (${he.join(', ')})`);
+      if (!(h > 0))
+        throw new RangeError(
+          `BoxMesh: the geometry's bounding box times the scale must have a positive size, got half extents (${he.join(', ')})`,
+        );
     }
     return { kind: 'box', halfExtents: he };
   }
@@ -86,10 +91,16 @@ export class PlaneMesh extends Mesh {
   private readonly normal: Float64Array;
   private readonly offset: number;
 
-  constructor(geometry: THREE.BufferGeometry, material: THREE.Material | THREE.Material[] | undefined, normal: ArrayLike<number>, offset = 0) {
+  constructor(
+    geometry: THREE.BufferGeometry,
+    material: THREE.Material | THREE.Material[] | undefined,
+    normal: ArrayLike<number>,
+    offset = 0,
+  ) {
     const where = 'PlaneMesh';
     const N = numbers(where, 'normal', normal, null);
-    if (N.length !== 2 && N.length !== 3) throw new RangeError(`${where}: argument 'normal' must have 2 or 3 numbers, got ${N.length}`);
+    if (N.length !== 2 && N.length !== 3)
+      throw new RangeError(`${where}: argument 'normal' must have 2 or 3 numbers, got ${N.length}`);
     finite(where, 'offset', offset, undefined, 'distance in m');
     super(geometryOf(where, geometry), material, 0, N.length);
     this.normal = N;
@@ -101,7 +112,6 @@ export class PlaneMesh extends Mesh {
   describeShape(): ShapeDescription {
     return { kind: 'halfspace', normal: this.normal, offset: this.offset };
   }
-
 }
 
 /**
@@ -125,10 +135,12 @@ export class TorusMesh extends Mesh {
     const where = 'TorusMesh';
     positive(where, 'majorRadius', majorRadius, 'radius in m');
     positive(where, 'minorRadius', minorRadius, 'radius in m');
-    if (!Array.isArray(plane) || plane.length !== 2) throw new TypeError(`${where}: argument 'plane' must be two axis numbers [i, j]`);
+    if (!Array.isArray(plane) || plane.length !== 2)
+      throw new TypeError(`${where}: argument 'plane' must be two axis numbers [i, j]`);
     integer(where, 'plane[0]', plane[0], 0, 2);
     integer(where, 'plane[1]', plane[1], 0, 2);
-    if (plane[0] === plane[1]) throw new RangeError(`${where}: argument 'plane' must name two different axes, got [${plane[0]}, ${plane[1]}]`);
+    if (plane[0] === plane[1])
+      throw new RangeError(`${where}: argument 'plane' must name two different axes, got [${plane[0]}, ${plane[1]}]`);
     super(geometryOf(where, geometry), material, massOf(where, mass), 3);
     this.major = majorRadius;
     this.minor = minorRadius;

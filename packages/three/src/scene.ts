@@ -88,7 +88,8 @@ export class Scene extends THREE.Scene<SceneEventMap> {
   constructor(options: SceneOptions = {}) {
     super();
     const where = 'Scene';
-    if (options === null || typeof options !== 'object') throw new TypeError(`${where}: argument 'options' must be an object, got ${options === null ? 'null' : typeof options}`);
+    if (options === null || typeof options !== 'object')
+      throw new TypeError(`${where}: argument 'options' must be an object, got ${options === null ? 'null' : typeof options}`);
     const n = options.dimensions === undefined ? 3 : integer(where, 'options.dimensions', options.dimensions, 2, 8);
     const gravity = options.gravity === undefined ? defaultGravity(n) : numbers(where, 'options.gravity', options.gravity, n);
     const slice = new Float64Array(Math.max(0, n - 3));
@@ -98,7 +99,12 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       if (n >= 4) slice[0] = options.sliceW;
     }
     const worker = options.worker ?? false;
-    if (typeof worker !== 'boolean' && typeof worker !== 'string' && !(worker instanceof URL) && (typeof worker !== 'object' || worker === null)) {
+    if (
+      typeof worker !== 'boolean' &&
+      typeof worker !== 'string' &&
+      !(worker instanceof URL) &&
+      (typeof worker !== 'object' || worker === null)
+    ) {
       throw new TypeError(`${where}: option 'worker' must be false, true, a Worker or a URL, got ${typeof worker}`);
     }
     this.host = createWorld(
@@ -160,9 +166,11 @@ export class Scene extends THREE.Scene<SceneEventMap> {
     const where = 'Scene.add';
     this.checkOpen(where);
     const n = this.dimensions;
-    if (mesh._link !== null) throw new RangeError(`${where}: this ${mesh.constructor.name} is in another scene; remove it there first`);
+    if (mesh._link !== null)
+      throw new RangeError(`${where}: this ${mesh.constructor.name} is in another scene; remove it there first`);
     if (mesh.dimensions === null) mesh.setDimensions(n, where);
-    if (mesh.dimensions !== n) throw new RangeError(`${where}: the ${mesh.constructor.name} has ${mesh.dimensions} dimensions, the scene ${n}`);
+    if (mesh.dimensions !== n)
+      throw new RangeError(`${where}: the ${mesh.constructor.name} has ${mesh.dimensions} dimensions, the scene ${n}`);
     const id = this.host.addBody(mesh.describeBody(n));
     try {
       mesh.flushPending(this.host, id);
@@ -205,10 +213,13 @@ export class Scene extends THREE.Scene<SceneEventMap> {
   addConstraint<J extends Joint>(joint: J): J {
     const where = 'Scene.addConstraint';
     this.checkOpen(where);
-    if (!(joint instanceof Joint)) throw new TypeError(`${where}: argument 'joint' must be a PhysiN joint (PointJoint, HingeJoint, …)`);
+    if (!(joint instanceof Joint))
+      throw new TypeError(`${where}: argument 'joint' must be a PhysiN joint (PointJoint, HingeJoint, …)`);
     if (joint._link !== null) throw new RangeError(`${where}: this ${joint.constructor.name} is already in a scene`);
-    if (joint.a._link !== this.link) throw new RangeError(`${where}: mesh 'a' of the ${joint.constructor.name} is not in this scene; add it first`);
-    if (joint.b !== null && joint.b._link !== this.link) throw new RangeError(`${where}: mesh 'b' of the ${joint.constructor.name} is not in this scene; add it first`);
+    if (joint.a._link !== this.link)
+      throw new RangeError(`${where}: mesh 'a' of the ${joint.constructor.name} is not in this scene; add it first`);
+    if (joint.b !== null && joint.b._link !== this.link)
+      throw new RangeError(`${where}: mesh 'b' of the ${joint.constructor.name} is not in this scene; add it first`);
     const id = this.host.addJoint(joint.describe());
     joint._id = id;
     joint._link = this.link;
@@ -334,7 +345,15 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       const normal = Float64Array.from(c.subarray(at + 4 + n, at + 4 + 2 * n));
       const relative = Float64Array.from(c.subarray(at + 4 + 2 * n, at + 4 + 3 * n));
       a.dispatchEvent({ type: 'collision', phase, other: b, point, normal, relativeVelocity: relative, impulse });
-      b.dispatchEvent({ type: 'collision', phase, other: a, point: point.slice(), normal: negate(normal), relativeVelocity: negate(relative), impulse });
+      b.dispatchEvent({
+        type: 'collision',
+        phase,
+        other: a,
+        point: point.slice(),
+        normal: negate(normal),
+        relativeVelocity: negate(relative),
+        impulse,
+      });
     }
   }
 

@@ -73,7 +73,9 @@ export function runCommand(t: CommandTarget, cmd: unknown, params: unknown, wher
     throw new RangeError(`${where}: unknown command '${String(cmd)}' (known: ${COMMAND_NAMES.join(', ')})`);
   }
   if (params === null || typeof params !== 'object') {
-    throw new TypeError(`${where}: argument 'params' of '${cmd}' must be an object, got ${params === null ? 'null' : typeof params}`);
+    throw new TypeError(
+      `${where}: argument 'params' of '${cmd}' must be an object, got ${params === null ? 'null' : typeof params}`,
+    );
   }
   (handlers[cmd as CommandName] as Handler<CommandName>)(t, params as never, `${where} '${cmd}'`);
 }

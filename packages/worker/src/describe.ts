@@ -57,9 +57,11 @@ export function buildShape(D: Dims, desc: ShapeDescription, where: string): Shap
 
 /** Builds a body from its description. */
 export function buildBody(D: Dims, desc: BodyDescription, where: string): Body {
-  if (!isObject(desc)) throw new TypeError(`${where}: argument 'description' must be an object { shape, mass?, ... }, got ${describeValue(desc)}`);
+  if (!isObject(desc))
+    throw new TypeError(`${where}: argument 'description' must be an object { shape, mass?, ... }, got ${describeValue(desc)}`);
   for (const key of Object.keys(desc)) {
-    if (!BODY_KEYS.has(key)) throw new RangeError(`${where}: unknown body property '${key}' (known: ${[...BODY_KEYS].join(', ')})`);
+    if (!BODY_KEYS.has(key))
+      throw new RangeError(`${where}: unknown body property '${key}' (known: ${[...BODY_KEYS].join(', ')})`);
   }
   const shape = buildShape(D, desc.shape, where);
   const { shape: _shape, ...rest } = desc;
@@ -68,7 +70,8 @@ export function buildBody(D: Dims, desc: BodyDescription, where: string): Body {
 
 /** Builds a joint from its description; `bodyOf` turns a host id into its body (throws if unknown). */
 export function buildJoint(desc: JointDescription, bodyOf: (id: unknown, name: string) => Body, where: string): Joint {
-  if (!isObject(desc)) throw new TypeError(`${where}: argument 'description' must be an object { kind, a, b, ... }, got ${describeValue(desc)}`);
+  if (!isObject(desc))
+    throw new TypeError(`${where}: argument 'description' must be an object { kind, a, b, ... }, got ${describeValue(desc)}`);
   const a = bodyOf(desc.a, 'a');
   const b = desc.b === null ? null : bodyOf(desc.b, 'b');
   const opts = desc.options as Record<string, unknown> | undefined;
@@ -86,13 +89,17 @@ export function buildJoint(desc: JointDescription, bodyOf: (id: unknown, name: s
     case 'subspace':
       return new SubspaceJoint(a, b, (opts ?? {}) as SubspaceJointOptions);
     default:
-      throw new RangeError(`${where}: unknown joint kind '${String((desc as { kind?: unknown }).kind)}' (known: ${JOINT_KINDS.join(', ')})`);
+      throw new RangeError(
+        `${where}: unknown joint kind '${String((desc as { kind?: unknown }).kind)}' (known: ${JOINT_KINDS.join(', ')})`,
+      );
   }
 }
 
 /** Checks a host id: a non-negative integer. */
 export function checkHostId(where: string, name: string, id: unknown): HostId {
-  if (typeof id !== 'number') throw new TypeError(`${where}: argument '${name}' must be an id (a non-negative integer), got ${describeValue(id)}`);
-  if (!Number.isInteger(id) || id < 0) throw new RangeError(`${where}: argument '${name}' must be an id (a non-negative integer), got ${id}`);
+  if (typeof id !== 'number')
+    throw new TypeError(`${where}: argument '${name}' must be an id (a non-negative integer), got ${describeValue(id)}`);
+  if (!Number.isInteger(id) || id < 0)
+    throw new RangeError(`${where}: argument '${name}' must be an id (a non-negative integer), got ${id}`);
   return id;
 }

@@ -53,6 +53,7 @@ export function errorFromData(data: ErrorData): Error {
       error = new Error(data.message);
       error.name = data.name;
   }
-  if (data.stack) error.stack = `${error.name}: ${error.message}\n    (in the world's thread)\n${data.stack.split('\n').slice(1).join('\n')}`;
+  if (data.stack)
+    error.stack = `${error.name}: ${error.message}\n    (in the world's thread)\n${data.stack.split('\n').slice(1).join('\n')}`;
   return error;
 }

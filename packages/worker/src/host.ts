@@ -81,7 +81,9 @@ async function startWorker(given: unknown, onDeath: (error: Error | null) => voi
   } else if (typeof Worker !== 'undefined' && given instanceof Worker) {
     worker = given;
   } else {
-    throw new TypeError(`openWorld: option 'worker' must be a Worker, a URL or a string, got ${given === null ? 'null' : typeof given}`);
+    throw new TypeError(
+      `openWorld: option 'worker' must be a Worker, a URL or a string, got ${given === null ? 'null' : typeof given}`,
+    );
   }
   worker.addEventListener('error', (e) => die(new Error(e.message || 'the worker failed')));
   return { api: wrap<WorkerApi>(worker), handle: worker, detach: () => void (alive = false) };
@@ -182,18 +184,26 @@ class Host implements WorldHost {
   }
 
   execute<C extends CommandName>(cmd: C, params: CommandMap[C]): void {
-    this.run({ op: 'execute', cmd, params: this.mode === 'worker' && params !== null && typeof params === 'object' ? structuredClone(params) : params });
+    this.run({
+      op: 'execute',
+      cmd,
+      params: this.mode === 'worker' && params !== null && typeof params === 'object' ? structuredClone(params) : params,
+    });
   }
 
   step(elapsed: number, maxSubSteps?: number): Promise<StepReport> | null {
     const where = 'WorldHost.step';
     this.checkOpen();
-    if (typeof elapsed !== 'number') throw new TypeError(`${where}: argument 'elapsed' must be a number of seconds, got ${typeof elapsed}`);
-    if (!(elapsed >= 0) || elapsed === Infinity) throw new RangeError(`${where}: argument 'elapsed' must be a finite number >= 0 (s), got ${elapsed}`);
+    if (typeof elapsed !== 'number')
+      throw new TypeError(`${where}: argument 'elapsed' must be a number of seconds, got ${typeof elapsed}`);
+    if (!(elapsed >= 0) || elapsed === Infinity)
+      throw new RangeError(`${where}: argument 'elapsed' must be a finite number >= 0 (s), got ${elapsed}`);
     const fixed = this.core.world.params.fixedTimeStep;
     const max = maxSubSteps === undefined ? Math.max(1, Math.ceil(elapsed / fixed - 1e-9)) : maxSubSteps;
-    if (typeof max !== 'number') throw new TypeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${typeof max}`);
-    if (!Number.isInteger(max) || max < 1) throw new RangeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${max}`);
+    if (typeof max !== 'number')
+      throw new TypeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${typeof max}`);
+    if (!Number.isInteger(max) || max < 1)
+      throw new RangeError(`${where}: argument 'maxSubSteps' must be an integer >= 1, got ${max}`);
     if (this.inFlight || this.starting) return null;
     if (this.dead) return Promise.reject(new Error('WorldHost.step: the worker died; call restart()'));
     return this.mode === 'main' ? this.stepHere(elapsed, max) : this.stepThere(elapsed, max);
@@ -221,7 +231,8 @@ class Host implements WorldHost {
     return new Promise<StepReport>((resolve, reject) => {
       this.pendingReject = reject;
       // the spare buffer travels as a transferable: moved, never copied
-      const request = send === null ? link.api.step(ops, elapsed, max, null) : link.api.step(ops, elapsed, max, transfer(send, [send]));
+      const request =
+        send === null ? link.api.step(ops, elapsed, max, null) : link.api.step(ops, elapsed, max, transfer(send, [send]));
       request.then(
         (answer) => {
           this.inFlight = false;
@@ -257,7 +268,8 @@ class Host implements WorldHost {
   angularVelocity(id: HostId, out: Float64Array = new Float64Array(this.core.D.k)): Float64Array {
     const where = 'WorldHost.angularVelocity';
     const D = this.core.D;
-    if (!(out instanceof Float64Array) || out.length !== D.k) throw new TypeError(`${where}: argument 'out' must be a Float64Array of length ${D.k}`);
+    if (!(out instanceof Float64Array) || out.length !== D.k)
+      throw new TypeError(`${where}: argument 'out' must be a Float64Array of length ${D.k}`);
     const body = this.core.bodyOf(id, 'id');
     out.fill(0);
     const r = this.current;
@@ -267,7 +279,14 @@ class Host implements WorldHost {
     if (index >= 0 && index < r.bodyCount && r.bodies[index * r.stride] === id) at = index * r.stride;
     else for (let i = 0; i < r.bodyCount && at < 0; i += 1) if (r.bodies[i * r.stride] === id) at = i * r.stride;
     if (at < 0) return out;
-    const s = this.omegaScratch ?? (this.omegaScratch = { R: new Float64Array(D.r), F: new Float64Array(D.r), L: new Float64Array(D.k), tmp: new Float64Array(D.k) });
+    const s =
+      this.omegaScratch ??
+      (this.omegaScratch = {
+        R: new Float64Array(D.r),
+        F: new Float64Array(D.r),
+        L: new Float64Array(D.k),
+        tmp: new Float64Array(D.k),
+      });
     for (let i = 0; i < D.r; i += 1) s.R[i] = r.bodies[at + 1 + D.n + i]!;
     for (let i = 0; i < D.k; i += 1) s.L[i] = r.bodies[at + 1 + 2 * D.n + D.r + i]!;
     const frame = body.shape.frameRotor;
@@ -282,7 +301,8 @@ class Host implements WorldHost {
 
   async snapshot(): Promise<Uint8Array> {
     this.checkOpen();
-    if (this.inFlight || this.starting) throw new RangeError('WorldHost.snapshot: a step is in flight or the worker is starting; wait for it');
+    if (this.inFlight || this.starting)
+      throw new RangeError('WorldHost.snapshot: a step is in flight or the worker is starting; wait for it');
     let bytes: Uint8Array;
     if (this.mode === 'main') {
       bytes = this.core.snapshot();
@@ -298,7 +318,8 @@ class Host implements WorldHost {
 
   async moveTo(thread: ThreadKind): Promise<void> {
     this.checkOpen();
-    if (thread !== 'main' && thread !== 'worker') throw new RangeError(`WorldHost.moveTo: argument 'thread' must be 'main' or 'worker', got ${String(thread)}`);
+    if (thread !== 'main' && thread !== 'worker')
+      throw new RangeError(`WorldHost.moveTo: argument 'thread' must be 'main' or 'worker', got ${String(thread)}`);
     if (thread === this.mode) return;
     const bytes = await this.snapshot();
     if (thread === 'worker') {
@@ -398,10 +419,13 @@ export async function openWorld(options: WorldOptions, hostOptions: HostOptions 
  */
 export function createWorld(options: WorldOptions, hostOptions: HostOptions = {}): WorldHost {
   if (hostOptions === null || typeof hostOptions !== 'object') {
-    throw new TypeError(`createWorld: argument 'hostOptions' must be an object { thread?, worker? }, got ${hostOptions === null ? 'null' : typeof hostOptions}`);
+    throw new TypeError(
+      `createWorld: argument 'hostOptions' must be an object { thread?, worker? }, got ${hostOptions === null ? 'null' : typeof hostOptions}`,
+    );
   }
   const thread = hostOptions.thread ?? (hostOptions.worker !== undefined ? 'worker' : 'main');
-  if (thread !== 'main' && thread !== 'worker') throw new RangeError(`createWorld: option 'thread' must be 'main' or 'worker', got ${String(thread)}`);
+  if (thread !== 'main' && thread !== 'worker')
+    throw new RangeError(`createWorld: option 'thread' must be 'main' or 'worker', got ${String(thread)}`);
   const core = WorldCore.create(options);
   const host = new Host(options, core, thread, hostOptions.worker);
   if (thread === 'worker') host.startInBackground();

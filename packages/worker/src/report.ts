@@ -94,7 +94,12 @@ export class ReportView implements StepReport {
     this.buffer = buffer;
     if (!same) this.header = new Float64Array(buffer, 0, 8);
     const h = this.header!;
-    const layout = h[H_BODIES]! !== this.bodyCount || h[H_COLLISIONS]! !== this.collisionCount || h[H_BROKEN]! !== this.brokenCount || h[H_SLEPT]! !== this.sleptCount || h[H_WOKE]! !== this.wokeCount;
+    const layout =
+      h[H_BODIES]! !== this.bodyCount ||
+      h[H_COLLISIONS]! !== this.collisionCount ||
+      h[H_BROKEN]! !== this.brokenCount ||
+      h[H_SLEPT]! !== this.sleptCount ||
+      h[H_WOKE]! !== this.wokeCount;
     this.steps = h[H_STEPS]!;
     this.time = h[H_TIME]!;
     this.bodyCount = h[H_BODIES]!;

@@ -357,7 +357,8 @@ export class WorldCore implements CommandTarget {
     const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     if (view.getUint32(0, true) !== SNAPSHOT_MAGIC) throw new RangeError(`${where}: argument 'bytes' is not a host snapshot`);
     const version = view.getUint32(4, true);
-    if (version !== SNAPSHOT_VERSION) throw new RangeError(`${where}: argument 'bytes' has version ${version}; this build reads ${SNAPSHOT_VERSION}`);
+    if (version !== SNAPSHOT_VERSION)
+      throw new RangeError(`${where}: argument 'bytes' has version ${version}; this build reads ${SNAPSHOT_VERSION}`);
     const nb = view.getUint32(16, true);
     const nj = view.getUint32(20, true);
     const head = 24 + 4 * (nb + nj);
@@ -366,7 +367,8 @@ export class WorldCore implements CommandTarget {
     core.accumulator = view.getFloat64(8, true);
     const bodies = core.world.bodies;
     const joints = core.world.constraints;
-    if (bodies.length !== nb || joints.length !== nj) throw new RangeError(`${where}: argument 'bytes' holds inconsistent counts`);
+    if (bodies.length !== nb || joints.length !== nj)
+      throw new RangeError(`${where}: argument 'bytes' holds inconsistent counts`);
     let at = 24;
     for (const b of bodies) {
       const id = view.getInt32(at, true);

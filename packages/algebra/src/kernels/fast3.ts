@@ -34,8 +34,14 @@ export function createFast3Kernels(D: Dims): RotorKernels {
     name: 'fast3',
 
     mul(out, a, b) {
-      const as = a[0]!, a1 = a[1]!, a2 = a[2]!, a3 = a[3]!;
-      const bs = b[0]!, b1 = b[1]!, b2 = b[2]!, b3 = b[3]!;
+      const as = a[0]!,
+        a1 = a[1]!,
+        a2 = a[2]!,
+        a3 = a[3]!;
+      const bs = b[0]!,
+        b1 = b[1]!,
+        b2 = b[2]!,
+        b3 = b[3]!;
       // The Hamilton product with (w, x, y, z) = (s, −e12, e02, −e01) substituted.
       out[0] = as * bs - a1 * b1 - a2 * b2 - a3 * b3;
       out[1] = as * b1 + a1 * bs + a3 * b2 - a2 * b3;
@@ -45,8 +51,13 @@ export function createFast3Kernels(D: Dims): RotorKernels {
     },
 
     applyVector(out, R, v) {
-      const w = R[0]!, x = -R[3]!, y = R[2]!, z = -R[1]!;
-      const v0 = v[0]!, v1 = v[1]!, v2 = v[2]!;
+      const w = R[0]!,
+        x = -R[3]!,
+        y = R[2]!,
+        z = -R[1]!;
+      const v0 = v[0]!,
+        v1 = v[1]!,
+        v2 = v[2]!;
       // q v q* = (w² − u·u) v + 2 (u·v) u + 2 w (u × v), u = (x, y, z): exact for any q.
       const a = w * w - x * x - y * y - z * z;
       const d2 = 2 * (x * v0 + y * v1 + z * v2);
@@ -59,8 +70,13 @@ export function createFast3Kernels(D: Dims): RotorKernels {
 
     applyVectorInverse(out, R, v) {
       // R~ is the conjugate quaternion.
-      const w = R[0]!, x = R[3]!, y = -R[2]!, z = R[1]!;
-      const v0 = v[0]!, v1 = v[1]!, v2 = v[2]!;
+      const w = R[0]!,
+        x = R[3]!,
+        y = -R[2]!,
+        z = R[1]!;
+      const v0 = v[0]!,
+        v1 = v[1]!,
+        v2 = v[2]!;
       // q v q* = (w² − u·u) v + 2 (u·v) u + 2 w (u × v), u = (x, y, z): exact for any q.
       const a = w * w - x * x - y * y - z * z;
       const d2 = 2 * (x * v0 + y * v1 + z * v2);
@@ -72,9 +88,14 @@ export function createFast3Kernels(D: Dims): RotorKernels {
     },
 
     applyBivector(out, R, B) {
-      const w = R[0]!, x = -R[3]!, y = R[2]!, z = -R[1]!;
+      const w = R[0]!,
+        x = -R[3]!,
+        y = R[2]!,
+        z = -R[1]!;
       // Rotate the axial vector (b12, −b02, b01) of B (ω_x = ω_yz, ω_y = −ω_xz, ω_z = ω_xy), map back.
-      const v0 = B[2]!, v1 = -B[1]!, v2 = B[0]!;
+      const v0 = B[2]!,
+        v1 = -B[1]!,
+        v2 = B[0]!;
       const a = w * w - x * x - y * y - z * z;
       const d2 = 2 * (x * v0 + y * v1 + z * v2);
       const w2 = 2 * w;
@@ -89,9 +110,14 @@ export function createFast3Kernels(D: Dims): RotorKernels {
 
     applyBivectorInverse(out, R, B) {
       // R~ is the conjugate quaternion.
-      const w = R[0]!, x = R[3]!, y = -R[2]!, z = R[1]!;
+      const w = R[0]!,
+        x = R[3]!,
+        y = -R[2]!,
+        z = R[1]!;
       // Rotate the axial vector (b12, −b02, b01) of B (ω_x = ω_yz, ω_y = −ω_xz, ω_z = ω_xy), map back.
-      const v0 = B[2]!, v1 = -B[1]!, v2 = B[0]!;
+      const v0 = B[2]!,
+        v1 = -B[1]!,
+        v2 = B[0]!;
       const a = w * w - x * x - y * y - z * z;
       const d2 = 2 * (x * v0 + y * v1 + z * v2);
       const w2 = 2 * w;
@@ -105,10 +131,20 @@ export function createFast3Kernels(D: Dims): RotorKernels {
     },
 
     toMatrix(out, R) {
-      const w = R[0]!, x = -R[3]!, y = R[2]!, z = -R[1]!;
-      const ww = w * w, xx = x * x, yy = y * y, zz = z * z;
-      const xy = 2 * x * y, xz = 2 * x * z, yz = 2 * y * z;
-      const wx = 2 * w * x, wy = 2 * w * y, wz = 2 * w * z;
+      const w = R[0]!,
+        x = -R[3]!,
+        y = R[2]!,
+        z = -R[1]!;
+      const ww = w * w,
+        xx = x * x,
+        yy = y * y,
+        zz = z * z;
+      const xy = 2 * x * y,
+        xz = 2 * x * z,
+        yz = 2 * y * z;
+      const wx = 2 * w * x,
+        wy = 2 * w * y,
+        wz = 2 * w * z;
       out[0] = ww + xx - yy - zz;
       out[1] = xy - wz;
       out[2] = xz + wy;
@@ -122,7 +158,9 @@ export function createFast3Kernels(D: Dims): RotorKernels {
     },
 
     exp(out, B, scale) {
-      const b0 = B[0]!, b1 = B[1]!, b2 = B[2]!;
+      const b0 = B[0]!,
+        b1 = B[1]!,
+        b2 = B[2]!;
       // Every 3D bivector is simple: exp(−X/2) = cos(θ/2) − (sin(θ/2)/θ) X with X = scale·B, θ = |X|.
       const theta = Math.abs(scale) * Math.sqrt(b0 * b0 + b1 * b1 + b2 * b2);
       // sin(θ/2)/θ written out (not a helper): V8 boxes a double returned by a call it does not inline.
@@ -137,14 +175,20 @@ export function createFast3Kernels(D: Dims): RotorKernels {
 
     defect(R) {
       // R R~ = |R|² exactly in 3D (no other grade appears), so only the norm can drift.
-      const s = R[0]!, a = R[1]!, b = R[2]!, c = R[3]!;
+      const s = R[0]!,
+        a = R[1]!,
+        b = R[2]!,
+        c = R[3]!;
       return Math.abs(s * s + a * a + b * b + c * c - 1);
     },
 
     correct(out, R) {
       // Every unit even element of the 3D algebra is a rotor: normalising is the exact fix.
       // A zero R gives non-finite numbers; the public rotorCorrect refuses it first.
-      const s = R[0]!, a = R[1]!, b = R[2]!, c = R[3]!;
+      const s = R[0]!,
+        a = R[1]!,
+        b = R[2]!,
+        c = R[3]!;
       const inv = 1 / Math.sqrt(s * s + a * a + b * b + c * c);
       out[0] = s * inv;
       out[1] = a * inv;

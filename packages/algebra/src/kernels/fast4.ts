@@ -45,8 +45,22 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     name: 'fast4',
 
     mul(out, a, b) {
-      const a0 = a[0]!, a1 = a[1]!, a2 = a[2]!, a3 = a[3]!, a4 = a[4]!, a5 = a[5]!, a6 = a[6]!, a7 = a[7]!;
-      const b0 = b[0]!, b1 = b[1]!, b2 = b[2]!, b3 = b[3]!, b4 = b[4]!, b5 = b[5]!, b6 = b[6]!, b7 = b[7]!;
+      const a0 = a[0]!,
+        a1 = a[1]!,
+        a2 = a[2]!,
+        a3 = a[3]!,
+        a4 = a[4]!,
+        a5 = a[5]!,
+        a6 = a[6]!,
+        a7 = a[7]!;
+      const b0 = b[0]!,
+        b1 = b[1]!,
+        b2 = b[2]!,
+        b3 = b[3]!,
+        b4 = b[4]!,
+        b5 = b[5]!,
+        b6 = b[6]!,
+        b7 = b[7]!;
       out[0] = a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3 - a4 * b4 - a5 * b5 - a6 * b6 + a7 * b7;
       out[1] = a0 * b1 + a1 * b0 - a2 * b4 + a4 * b2 - a3 * b5 + a5 * b3 - a6 * b7 - a7 * b6;
       out[2] = a0 * b2 + a1 * b4 + a2 * b0 - a4 * b1 - a3 * b6 + a5 * b7 + a6 * b3 + a7 * b5;
@@ -59,8 +73,18 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     },
 
     applyVector(out, R, v) {
-      const r0 = R[0]!, r1 = R[1]!, r2 = R[2]!, r3 = R[3]!, r4 = R[4]!, r5 = R[5]!, r6 = R[6]!, r7 = R[7]!;
-      const v0 = v[0]!, v1 = v[1]!, v2 = v[2]!, v3 = v[3]!;
+      const r0 = R[0]!,
+        r1 = R[1]!,
+        r2 = R[2]!,
+        r3 = R[3]!,
+        r4 = R[4]!,
+        r5 = R[5]!,
+        r6 = R[6]!,
+        r7 = R[7]!;
+      const v0 = v[0]!,
+        v1 = v[1]!,
+        v2 = v[2]!,
+        v3 = v[3]!;
       // R v: odd element on e0, e1, e2, e3, e012, e013, e023, e123.
       const t0 = r0 * v0 + r1 * v1 + r2 * v2 + r3 * v3;
       const t1 = r0 * v1 - r1 * v0 + r4 * v2 + r5 * v3;
@@ -80,8 +104,18 @@ export function createFast4Kernels(D: Dims): RotorKernels {
 
     applyVectorInverse(out, R, v) {
       // R~ keeps the scalar and I parts and negates the bivector part.
-      const r0 = R[0]!, r1 = -R[1]!, r2 = -R[2]!, r3 = -R[3]!, r4 = -R[4]!, r5 = -R[5]!, r6 = -R[6]!, r7 = R[7]!;
-      const v0 = v[0]!, v1 = v[1]!, v2 = v[2]!, v3 = v[3]!;
+      const r0 = R[0]!,
+        r1 = -R[1]!,
+        r2 = -R[2]!,
+        r3 = -R[3]!,
+        r4 = -R[4]!,
+        r5 = -R[5]!,
+        r6 = -R[6]!,
+        r7 = R[7]!;
+      const v0 = v[0]!,
+        v1 = v[1]!,
+        v2 = v[2]!,
+        v3 = v[3]!;
       // R v: odd element on e0, e1, e2, e3, e012, e013, e023, e123.
       const t0 = r0 * v0 + r1 * v1 + r2 * v2 + r3 * v3;
       const t1 = r0 * v1 - r1 * v0 + r4 * v2 + r5 * v3;
@@ -100,8 +134,20 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     },
 
     applyBivector(out, R, B) {
-      const r0 = R[0]!, r1 = R[1]!, r2 = R[2]!, r3 = R[3]!, r4 = R[4]!, r5 = R[5]!, r6 = R[6]!, r7 = R[7]!;
-      const B0 = B[0]!, B1 = B[1]!, B2 = B[2]!, B3 = B[3]!, B4 = B[4]!, B5 = B[5]!;
+      const r0 = R[0]!,
+        r1 = R[1]!,
+        r2 = R[2]!,
+        r3 = R[3]!,
+        r4 = R[4]!,
+        r5 = R[5]!,
+        r6 = R[6]!,
+        r7 = R[7]!;
+      const B0 = B[0]!,
+        B1 = B[1]!,
+        B2 = B[2]!,
+        B3 = B[3]!,
+        B4 = B[4]!,
+        B5 = B[5]!;
       // R B: a full even element.
       const u0 = -r1 * B0 - r2 * B1 - r3 * B2 - r4 * B3 - r5 * B4 - r6 * B5;
       const u1 = r0 * B0 - r2 * B3 + r4 * B1 - r3 * B4 + r5 * B2 - r7 * B5;
@@ -123,8 +169,20 @@ export function createFast4Kernels(D: Dims): RotorKernels {
 
     applyBivectorInverse(out, R, B) {
       // R~ keeps the scalar and I parts and negates the bivector part.
-      const r0 = R[0]!, r1 = -R[1]!, r2 = -R[2]!, r3 = -R[3]!, r4 = -R[4]!, r5 = -R[5]!, r6 = -R[6]!, r7 = R[7]!;
-      const B0 = B[0]!, B1 = B[1]!, B2 = B[2]!, B3 = B[3]!, B4 = B[4]!, B5 = B[5]!;
+      const r0 = R[0]!,
+        r1 = -R[1]!,
+        r2 = -R[2]!,
+        r3 = -R[3]!,
+        r4 = -R[4]!,
+        r5 = -R[5]!,
+        r6 = -R[6]!,
+        r7 = R[7]!;
+      const B0 = B[0]!,
+        B1 = B[1]!,
+        B2 = B[2]!,
+        B3 = B[3]!,
+        B4 = B[4]!,
+        B5 = B[5]!;
       // R B: a full even element.
       const u0 = -r1 * B0 - r2 * B1 - r3 * B2 - r4 * B3 - r5 * B4 - r6 * B5;
       const u1 = r0 * B0 - r2 * B3 + r4 * B1 - r3 * B4 + r5 * B2 - r7 * B5;
@@ -145,9 +203,22 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     },
 
     toMatrix(out, R) {
-      const r0 = R[0]!, r1 = R[1]!, r2 = R[2]!, r3 = R[3]!, r4 = R[4]!, r5 = R[5]!, r6 = R[6]!, r7 = R[7]!;
-      const q0 = r0 * r0, q1 = r1 * r1, q2 = r2 * r2, q3 = r3 * r3;
-      const q4 = r4 * r4, q5 = r5 * r5, q6 = r6 * r6, q7 = r7 * r7;
+      const r0 = R[0]!,
+        r1 = R[1]!,
+        r2 = R[2]!,
+        r3 = R[3]!,
+        r4 = R[4]!,
+        r5 = R[5]!,
+        r6 = R[6]!,
+        r7 = R[7]!;
+      const q0 = r0 * r0,
+        q1 = r1 * r1,
+        q2 = r2 * r2,
+        q3 = r3 * r3;
+      const q4 = r4 * r4,
+        q5 = r5 * r5,
+        q6 = r6 * r6,
+        q7 = r7 * r7;
       // Column c is R e_c R~ (expanded symbolically from the product table).
       out[0] = q0 - q1 - q2 - q3 + q4 + q5 + q6 - q7;
       out[5] = q0 - q1 + q2 + q3 - q4 - q5 + q6 - q7;
@@ -169,18 +240,27 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     },
 
     exp(out, B, scale) {
-      const b0 = scale * B[0]!, b1 = scale * B[1]!, b2 = scale * B[2]!;
-      const b3 = scale * B[3]!, b4 = scale * B[4]!, b5 = scale * B[5]!;
+      const b0 = scale * B[0]!,
+        b1 = scale * B[1]!,
+        b2 = scale * B[2]!;
+      const b3 = scale * B[3]!,
+        b4 = scale * B[4]!,
+        b5 = scale * B[5]!;
       // X = scale·B; exp(−X/2) = Σ± P± (cos(θ±/2) − (sin(θ±/2)/θ±) X), θ± = √(|X|² ∓ 2 Pf X):
       // no division by θ+² − θ−², so the isoclinic case (one θ zero) needs no special branch.
-      const dp0 = b0 - b5, dp1 = b1 + b4, dp2 = b2 - b3;
-      const dm0 = b0 + b5, dm1 = b1 - b4, dm2 = b2 + b3;
+      const dp0 = b0 - b5,
+        dp1 = b1 + b4,
+        dp2 = b2 - b3;
+      const dm0 = b0 + b5,
+        dm1 = b1 - b4,
+        dm2 = b2 + b3;
       const thetaP = Math.sqrt(dp0 * dp0 + dp1 * dp1 + dp2 * dp2);
       const thetaM = Math.sqrt(dm0 * dm0 + dm1 * dm1 + dm2 * dm2);
       const cP = Math.cos(0.5 * thetaP);
       const cM = Math.cos(0.5 * thetaM);
       // sin(θ/2)/θ written out (not a helper): V8 boxes a double returned by a call it does not inline.
-      const tP2 = thetaP * thetaP, tM2 = thetaM * thetaM;
+      const tP2 = thetaP * thetaP,
+        tM2 = thetaM * thetaM;
       const fP = thetaP < SINC_SERIES_BELOW ? 0.5 - tP2 / 48 + (tP2 * tP2) / 3840 : Math.sin(0.5 * thetaP) / thetaP;
       const fM = thetaM < SINC_SERIES_BELOW ? 0.5 - tM2 / 48 + (tM2 * tM2) / 3840 : Math.sin(0.5 * thetaM) / thetaM;
       // P± = (1 ± I)/2 expanded: the I parts of the two halves differ in sign.
@@ -199,20 +279,37 @@ export function createFast4Kernels(D: Dims): RotorKernels {
     },
 
     defect(R) {
-      const s = R[0]!, p = R[7]!;
-      const b0 = R[1]!, b1 = R[2]!, b2 = R[3]!, b3 = R[4]!, b4 = R[5]!, b5 = R[6]!;
+      const s = R[0]!,
+        p = R[7]!;
+      const b0 = R[1]!,
+        b1 = R[2]!,
+        b2 = R[3]!,
+        b3 = R[4]!,
+        b4 = R[5]!,
+        b5 = R[6]!;
       const a = s * s + b0 * b0 + b1 * b1 + b2 * b2 + b3 * b3 + b4 * b4 + b5 * b5 + p * p;
       const c = 2 * (s * p - (b0 * b5 - b1 * b4 + b2 * b3));
       return Math.max(Math.abs(a - 1), Math.abs(c));
     },
 
     correct(out, R) {
-      const s = R[0]!, p = R[7]!;
-      const b0 = R[1]!, b1 = R[2]!, b2 = R[3]!, b3 = R[4]!, b4 = R[5]!, b5 = R[6]!;
+      const s = R[0]!,
+        p = R[7]!;
+      const b0 = R[1]!,
+        b1 = R[2]!,
+        b2 = R[3]!,
+        b3 = R[4]!,
+        b4 = R[5]!,
+        b5 = R[6]!;
       // R R~ = a + c I = P+ (a + c) + P− (a − c); both halves written as sums of squares.
-      const sp = s + p, sm = s - p;
-      const dp0 = b0 - b5, dp1 = b1 + b4, dp2 = b2 - b3;
-      const dm0 = b0 + b5, dm1 = b1 - b4, dm2 = b2 + b3;
+      const sp = s + p,
+        sm = s - p;
+      const dp0 = b0 - b5,
+        dp1 = b1 + b4,
+        dp2 = b2 - b3;
+      const dm0 = b0 + b5,
+        dm1 = b1 - b4,
+        dm2 = b2 + b3;
       const aPlus = sp * sp + dp0 * dp0 + dp1 * dp1 + dp2 * dp2;
       const aMinus = sm * sm + dm0 * dm0 + dm1 * dm1 + dm2 * dm2;
       // X = (R R~)^(−1/2) = P+ (a + c)^(−1/2) + P− (a − c)^(−1/2) is central, so R X is exact:

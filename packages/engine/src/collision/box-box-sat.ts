@@ -131,7 +131,14 @@ export function boxBoxSat(
 }
 
 /** {@link boxBoxSat} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`. */
-export function boxBoxSatKernel(n: number, a: CollisionBox, poseA: Pose, b: CollisionBox, poseB: Pose, scratch: NarrowphaseScratch): boolean {
+export function boxBoxSatKernel(
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
   return n === 3 ? boxBoxSat3Kernel(a, poseA, b, poseB, scratch) : boxBoxSatGeneralKernel(n, a, poseA, b, poseB, scratch);
 }
 
@@ -327,8 +334,12 @@ export function mixedAxisSeparation(
     L[cols[1]] = rows[0];
     len = Math.sqrt(rows[0] * rows[0] + rows[1] * rows[1]);
   } else if (m === 3) {
-    const a0 = rows[0], a1 = rows[1], a2 = rows[2];
-    const b0 = rows[3], b1 = rows[4], b2 = rows[5];
+    const a0 = rows[0],
+      a1 = rows[1],
+      a2 = rows[2];
+    const b0 = rows[3],
+      b1 = rows[4],
+      b2 = rows[5];
     const x = a1 * b2 - a2 * b1;
     const y = a2 * b0 - a0 * b2;
     const z = a0 * b1 - a1 * b0;
@@ -338,9 +349,18 @@ export function mixedAxisSeparation(
     len = Math.sqrt(x * x + y * y + z * z);
   } else if (m === 4) {
     // cofactors of the 3×4 matrix of rows a, b, c, from its 2×2 minors of b and c
-    const a0 = rows[0], a1 = rows[1], a2 = rows[2], a3 = rows[3];
-    const b0 = rows[4], b1 = rows[5], b2 = rows[6], b3 = rows[7];
-    const c0 = rows[8], c1 = rows[9], c2 = rows[10], c3 = rows[11];
+    const a0 = rows[0],
+      a1 = rows[1],
+      a2 = rows[2],
+      a3 = rows[3];
+    const b0 = rows[4],
+      b1 = rows[5],
+      b2 = rows[6],
+      b3 = rows[7];
+    const c0 = rows[8],
+      c1 = rows[9],
+      c2 = rows[10],
+      c3 = rows[11];
     const m01 = b0 * c1 - b1 * c0;
     const m02 = b0 * c2 - b2 * c0;
     const m03 = b0 * c3 - b3 * c0;

@@ -27,7 +27,13 @@ export function boxBoxSat3(
 }
 
 /** {@link boxBoxSat3} with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`. */
-export function boxBoxSat3Kernel(a: CollisionBox, poseA: Pose, b: CollisionBox, poseB: Pose, scratch: NarrowphaseScratch): boolean {
+export function boxBoxSat3Kernel(
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
   const margin = scratch.scalars[NARROWPHASE_MARGIN];
   const MA = poseA.M;
   const MB = poseB.M;

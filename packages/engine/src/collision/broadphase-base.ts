@@ -3,23 +3,11 @@
  * kept aside, and the sorted pair set with its allocation-free update. A subclass supplies the
  * box structure (the candidate search, box queries and ray walks).
  */
-import type {
-  Broadphase,
-  BroadphaseOptions,
-  BroadphaseStats,
-  ProxyRayCast,
-  ProxyVisitor,
-} from './broadphase.js';
+import type { Broadphase, BroadphaseOptions, BroadphaseStats, ProxyRayCast, ProxyVisitor } from './broadphase.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './broadphase-constants.js';
 import { rayHitsBox } from './broadphase-aabb-tree.js';
 import { sortKeys } from './broadphase-sort.js';
-import {
-  checkDimension,
-  checkDirection,
-  checkFiniteArray,
-  checkNumber,
-  checkOutput,
-} from './query-checks.js';
+import { checkDimension, checkDirection, checkFiniteArray, checkNumber, checkOutput } from './query-checks.js';
 
 /** Proxy flag bit: the id is in use. */
 export const ALIVE = 1;
@@ -382,7 +370,7 @@ export abstract class BroadphaseBase implements Broadphase {
 
   /** True when the pair (a, b) is worth keeping: not both static. */
   protected pairable(a: number, b: number): boolean {
-    return ((this.flags[a]! & this.flags[b]!) & STATIC) === 0;
+    return (this.flags[a]! & this.flags[b]! & STATIC) === 0;
   }
 
   /** True if the fat boxes of proxies a and b overlap (closed). */
@@ -571,7 +559,8 @@ export abstract class BroadphaseBase implements Broadphase {
     if (this.moved.length < s.moved.length) this.moved = new Int32Array(growLength(this.moved.length, s.moved.length));
     this.moved.set(s.moved);
     this.movedCount = s.moved.length;
-    if (this.halfSpaces.length < s.halfSpaces.length) this.halfSpaces = new Int32Array(growLength(this.halfSpaces.length, s.halfSpaces.length));
+    if (this.halfSpaces.length < s.halfSpaces.length)
+      this.halfSpaces = new Int32Array(growLength(this.halfSpaces.length, s.halfSpaces.length));
     this.halfSpaces.set(s.halfSpaces);
     this.halfSpaceCount = s.halfSpaces.length;
     this.freeIds.set(s.freeIds);
@@ -613,12 +602,7 @@ export abstract class BroadphaseBase implements Broadphase {
     });
   }
 
-  rayCast(
-    origin: ArrayLike<number>,
-    direction: ArrayLike<number>,
-    maxDistance: number,
-    cast: ProxyRayCast,
-  ): number {
+  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number, cast: ProxyRayCast): number {
     checkFiniteArray(origin, this.n, 'origin');
     checkDirection(direction, this.n, 'direction');
     checkNumber(maxDistance, 'maxDistance', 0, true);

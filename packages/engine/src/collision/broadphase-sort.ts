@@ -56,13 +56,7 @@ export function insertionSortIdsByKey(
 }
 
 /** As {@link insertionSortIdsByKey} but O(count log count) whatever the input order (heapsort). */
-export function heapSortIdsByKey(
-  ids: Int32Array,
-  count: number,
-  values: Float64Array,
-  stride: number,
-  offset: number,
-): void {
+export function heapSortIdsByKey(ids: Int32Array, count: number, values: Float64Array, stride: number, offset: number): void {
   for (let start = (count >> 1) - 1; start >= 0; start -= 1) {
     siftDownIds(ids, start, count, values, stride, offset);
   }
@@ -74,14 +68,7 @@ export function heapSortIdsByKey(
   }
 }
 
-function siftDownIds(
-  ids: Int32Array,
-  start: number,
-  end: number,
-  values: Float64Array,
-  stride: number,
-  offset: number,
-): void {
+function siftDownIds(ids: Int32Array, start: number, end: number, values: Float64Array, stride: number, offset: number): void {
   let root = start;
   const id = ids[root]!;
   const v = values[id * stride + offset]!;

@@ -116,12 +116,7 @@ export interface Broadphase {
    * (d̂ = direction normalised), half-spaces first, pruning with the closest hit so far.
    * Returns the closest distance reported by `cast`, or −1.
    */
-  rayCast(
-    origin: ArrayLike<number>,
-    direction: ArrayLike<number>,
-    maxDistance: number,
-    cast: ProxyRayCast,
-  ): number;
+  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number, cast: ProxyRayCast): number;
 }
 
 /** Which structure a broadphase uses. */
@@ -132,11 +127,7 @@ export type BroadphaseKind = 'tree' | 'sap';
  * docs/collision.md for the measured comparison with `'sap'`, sweep-and-prune on the axis of
  * largest variance).
  */
-export function createBroadphase(
-  n: number,
-  options: BroadphaseOptions = {},
-  kind: BroadphaseKind = 'tree',
-): Broadphase {
+export function createBroadphase(n: number, options: BroadphaseOptions = {}, kind: BroadphaseKind = 'tree'): Broadphase {
   if (kind === 'sap') return new SweepAndPruneBroadphase(n, options);
   if (kind !== 'tree') throw new RangeError(`kind must be 'tree' or 'sap', got ${String(kind)}`);
   return new TreeBroadphase(n, options);

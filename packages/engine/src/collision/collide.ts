@@ -9,13 +9,7 @@
  */
 import type { CollidableShape, Manifold, Pose } from './manifold.js';
 import { checkNarrowphaseDimension } from './manifold.js';
-import {
-  checkCollisionShape,
-  checkFiniteNumber,
-  checkManifold,
-  checkPose,
-  checkScratch,
-} from './narrowphase-checks.js';
+import { checkCollisionShape, checkFiniteNumber, checkManifold, checkPose, checkScratch } from './narrowphase-checks.js';
 import { NARROWPHASE_MARGIN } from './narrowphase-scratch.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import type { KernelPairCollider } from './pair-kernel.js';

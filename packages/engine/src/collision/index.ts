@@ -5,14 +5,7 @@
  */
 export { computeBounds, computeBoundsUnchecked } from './bounds.js';
 export { createBroadphase, DEFAULT_BROADPHASE_MARGIN } from './broadphase.js';
-export type {
-  Broadphase,
-  BroadphaseOptions,
-  BroadphaseStats,
-  BroadphaseKind,
-  ProxyVisitor,
-  ProxyRayCast,
-} from './broadphase.js';
+export type { Broadphase, BroadphaseOptions, BroadphaseStats, BroadphaseKind, ProxyVisitor, ProxyRayCast } from './broadphase.js';
 export { TreeBroadphase } from './broadphase-tree.js';
 export { SweepAndPruneBroadphase } from './broadphase-sap.js';
 export {

@@ -138,8 +138,6 @@ export function checkCollisionShape(shape: unknown, n: number, name: string): vo
       return;
     }
     default:
-      throw new TypeError(
-        `'${name}.kind' must be 'box', 'sphere', 'halfspace', 'torus' or 'mesh', got ${String(s.kind)}`,
-      );
+      throw new TypeError(`'${name}.kind' must be 'box', 'sphere', 'halfspace', 'torus' or 'mesh', got ${String(s.kind)}`);
   }
 }

@@ -191,7 +191,9 @@ export function clipCandidateBound(n: number): number {
 export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions = {}): NarrowphaseScratch {
   checkNarrowphaseDimension(n, 'n');
   if (typeof options !== 'object' || options === null) {
-    throw new TypeError(`createNarrowphaseScratch: 'options' must be an object, got ${options === null ? 'null' : typeof options}`);
+    throw new TypeError(
+      `createNarrowphaseScratch: 'options' must be an object, got ${options === null ? 'null' : typeof options}`,
+    );
   }
   const axisTolerance = readTolerance(options.axisTolerance, DEFAULT_AXIS_TOLERANCE, 'options.axisTolerance');
   const featureTieTolerance = readTolerance(

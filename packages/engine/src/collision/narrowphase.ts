@@ -10,13 +10,7 @@
  */
 export type { CollidableShape, ColliderTable, Manifold, PairCollider, Pose } from './manifold.js';
 export { createManifold, createPose, maxManifoldPoints, NARROWPHASE_MAX_DIMENSIONS } from './manifold.js';
-export type {
-  CollisionBox,
-  CollisionHalfSpace,
-  CollisionMesh,
-  CollisionSphere,
-  CollisionTorus,
-} from './narrowphase-shapes.js';
+export type { CollisionBox, CollisionHalfSpace, CollisionMesh, CollisionSphere, CollisionTorus } from './narrowphase-shapes.js';
 export type { NarrowphaseOptions, NarrowphaseScratch, SatResult } from './narrowphase-scratch.js';
 export {
   createNarrowphaseScratch,

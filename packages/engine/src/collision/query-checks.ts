@@ -31,11 +31,7 @@ export function checkOutput(v: unknown, length: number, name: string): asserts v
 }
 
 /** Checks that `v` is an array-like of exactly `length` finite numbers. */
-export function checkFiniteArray(
-  v: unknown,
-  length: number,
-  name: string,
-): asserts v is ArrayLike<number> {
+export function checkFiniteArray(v: unknown, length: number, name: string): asserts v is ArrayLike<number> {
   if (v === null || typeof v !== 'object' || typeof (v as ArrayLike<number>).length !== 'number') {
     throw new TypeError(`${name} must be an array of ${length} numbers`);
   }
@@ -51,12 +47,7 @@ export function checkFiniteArray(
 }
 
 /** Checks that `x` is a finite number (or, with `allowInfinity`, +Infinity) and >= `min`. */
-export function checkNumber(
-  x: unknown,
-  name: string,
-  min = -Infinity,
-  allowInfinity = false,
-): asserts x is number {
+export function checkNumber(x: unknown, name: string, min = -Infinity, allowInfinity = false): asserts x is number {
   if (typeof x !== 'number') throw new TypeError(`${name} must be a number`);
   if (Number.isNaN(x) || (!allowInfinity && !Number.isFinite(x)) || x === -Infinity) {
     throw new RangeError(`${name} must be ${allowInfinity ? 'a number or +Infinity' : 'finite'}, got ${x}`);
@@ -111,18 +102,14 @@ export function checkShape(shape: unknown, n: number, name = 'shape'): asserts s
         throw new RangeError(`${name}.minorRadius must be > 0, got ${s.minorRadius}`);
       }
       if (!(s.majorRadius > s.minorRadius)) {
-        throw new RangeError(
-          `${name}.majorRadius must be > minorRadius (${s.minorRadius}), got ${s.majorRadius}`,
-        );
+        throw new RangeError(`${name}.majorRadius must be > minorRadius (${s.minorRadius}), got ${s.majorRadius}`);
       }
       const { planeI, planeJ } = s;
       if (!Number.isInteger(planeI) || planeI < 0 || planeI >= n) {
         throw new RangeError(`${name}.planeI must be an axis index in 0..${n - 1}, got ${planeI}`);
       }
       if (!Number.isInteger(planeJ) || planeJ < 0 || planeJ >= n || planeJ === planeI) {
-        throw new RangeError(
-          `${name}.planeJ must be an axis index in 0..${n - 1} other than planeI, got ${planeJ}`,
-        );
+        throw new RangeError(`${name}.planeJ must be an axis index in 0..${n - 1} other than planeI, got ${planeJ}`);
       }
       return;
     }

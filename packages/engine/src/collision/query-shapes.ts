@@ -66,9 +66,4 @@ export interface ConvexMeshGeometry {
 }
 
 /** Every shape geometry the spatial queries understand. */
-export type QueryShape =
-  | BoxGeometry
-  | SphereGeometry
-  | HalfSpaceGeometry
-  | TorusGeometry
-  | ConvexMeshGeometry;
+export type QueryShape = BoxGeometry | SphereGeometry | HalfSpaceGeometry | TorusGeometry | ConvexMeshGeometry;

@@ -100,8 +100,14 @@ export function rayCastClosest(
   checkFiniteArray(origin, n, 'origin');
   checkDirection(direction, n, 'direction');
   checkNumber(maxDistance, 'maxDistance', 0, true);
-  if (out === null || typeof out !== 'object' || !(out.point instanceof Float64Array) || out.point.length !== n ||
-    !(out.normal instanceof Float64Array) || out.normal.length !== n) {
+  if (
+    out === null ||
+    typeof out !== 'object' ||
+    !(out.point instanceof Float64Array) ||
+    out.point.length !== n ||
+    !(out.normal instanceof Float64Array) ||
+    out.normal.length !== n
+  ) {
     throw new TypeError(`out must be a RayCastResult with point and normal of length ${n}`);
   }
   if (torus === null || typeof torus !== 'object') throw new TypeError('torus must be an options object');
@@ -124,10 +130,18 @@ export function rayCastClosest(
   broadphase.rayCast(origin, d, maxDistance, (id, limit) => {
     const shape = source.shapeOf(id);
     const tol =
-      torus.tolerance ??
-      (shape.kind === 'torus' ? DEFAULT_TORUS_RAY_TOLERANCE * (shape.majorRadius + shape.minorRadius) : 0);
+      torus.tolerance ?? (shape.kind === 'torus' ? DEFAULT_TORUS_RAY_TOLERANCE * (shape.majorRadius + shape.minorRadius) : 0);
     const t = rayCastShapeUnchecked(
-      n, shape, source.positionOf(id), source.rotationOf(id), origin, d, limit, scratch, tol, maxSteps,
+      n,
+      shape,
+      source.positionOf(id),
+      source.rotationOf(id),
+      origin,
+      d,
+      limit,
+      scratch,
+      tol,
+      maxSteps,
     );
     if (t < 0) return -1;
     if (out.id < 0 || t < out.distance || (t === out.distance && id < out.id)) {

@@ -24,12 +24,7 @@ const REFINE_STEPS = 6;
  * also writes the gradient of the distance (the outward unit normal of the nearest surface point;
  * zero on the core circle, and without its in-plane part on the axis ρ = 0, where it is undefined).
  */
-export function torusDistance(
-  n: number,
-  torus: TorusGeometry,
-  q: ArrayLike<number>,
-  outGrad: Float64Array | null,
-): number {
+export function torusDistance(n: number, torus: TorusGeometry, q: ArrayLike<number>, outGrad: Float64Array | null): number {
   const pi = torus.planeI;
   const pj = torus.planeJ;
   let s = 0;

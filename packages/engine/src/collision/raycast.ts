@@ -237,13 +237,7 @@ function rayHalfSpace(
 }
 
 /** Writes the ray in the shape's local frame into localO / localD: Mᵀ(o − x), Mᵀd. */
-function toLocal(
-  n: number,
-  x: ArrayLike<number>,
-  M: ArrayLike<number>,
-  o: ArrayLike<number>,
-  d: ArrayLike<number>,
-): void {
+function toLocal(n: number, x: ArrayLike<number>, M: ArrayLike<number>, o: ArrayLike<number>, d: ArrayLike<number>): void {
   for (let c = 0; c < n; c += 1) {
     let po = 0;
     let pd = 0;
@@ -268,13 +262,7 @@ function normalToWorld(n: number, M: ArrayLike<number>, v: ArrayLike<number>, vO
   normalize(n, out);
 }
 
-function rayBoxLocal(
-  n: number,
-  a: ArrayLike<number>,
-  M: ArrayLike<number>,
-  maxDistance: number,
-  hit: RayHit,
-): number {
+function rayBoxLocal(n: number, a: ArrayLike<number>, M: ArrayLike<number>, maxDistance: number, hit: RayHit): number {
   insideStart = false;
   let tEnter = -Infinity;
   let tExit = Infinity;
@@ -312,13 +300,7 @@ function rayBoxLocal(
   return tEnter;
 }
 
-function rayMeshLocal(
-  n: number,
-  mesh: ConvexMeshGeometry,
-  M: ArrayLike<number>,
-  maxDistance: number,
-  hit: RayHit,
-): number {
+function rayMeshLocal(n: number, mesh: ConvexMeshGeometry, M: ArrayLike<number>, maxDistance: number, hit: RayHit): number {
   insideStart = false;
   const normals = mesh.facetNormals;
   const offsets = mesh.facetOffsets;

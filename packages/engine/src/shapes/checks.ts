@@ -99,7 +99,9 @@ export function checkVector(where: string, value: unknown, name: string, length:
  */
 export function checkPoints(where: string, value: unknown, name: string, n: number): Float64Array {
   if (!Array.isArray(value) && !isNumberList(value)) {
-    throw new TypeError(`${where}: argument '${name}' must be an array of points or a flat array of numbers, got ${describe(value)}`);
+    throw new TypeError(
+      `${where}: argument '${name}' must be an array of points or a flat array of numbers, got ${describe(value)}`,
+    );
   }
   const list = value as ArrayLike<unknown>;
   if (list.length > 0 && typeof list[0] !== 'number') {
@@ -143,7 +145,9 @@ export function checkTuples(
   allowRepeats = false,
 ): Int32Array {
   if (!Array.isArray(value) && !isNumberList(value)) {
-    throw new TypeError(`${where}: argument '${name}' must be an array of index tuples or a flat array of indices, got ${describe(value)}`);
+    throw new TypeError(
+      `${where}: argument '${name}' must be an array of index tuples or a flat array of indices, got ${describe(value)}`,
+    );
   }
   const list = value as ArrayLike<unknown>;
   const nested = list.length > 0 && typeof list[0] !== 'number';

@@ -108,7 +108,8 @@ export function ConvexMesh(D: Dims, vertices: unknown, facets: unknown, options:
   const tolerance = readTolerance(where, options);
   const v = checkPoints(where, vertices, 'vertices', n);
   const count = v.length / n;
-  if (count < n + 1) throw new RangeError(`${where}: argument 'vertices' must hold at least ${n + 1} points in ${n}D, got ${count}`);
+  if (count < n + 1)
+    throw new RangeError(`${where}: argument 'vertices' must hold at least ${n + 1} points in ${n}D, got ${count}`);
   const f = checkTuples(where, facets, 'facets', n, count);
   return buildConvexMesh(where, checked, v, f, tolerance, {
     facets: 'facets',
@@ -132,15 +133,11 @@ export function ConvexMesh(D: Dims, vertices: unknown, facets: unknown, options:
  *   three consecutive positions are a triangle.
  * @param options - merge and convexity tolerances.
  */
-function fromTriangles(
-  D: Dims,
-  positions: unknown,
-  indices?: unknown,
-  options: ConvexMeshTriangleOptions = {},
-): ConvexMeshShape {
+function fromTriangles(D: Dims, positions: unknown, indices?: unknown, options: ConvexMeshTriangleOptions = {}): ConvexMeshShape {
   const where = 'ConvexMesh.fromTriangles';
   const checked = checkDims(where, D);
-  if (checked.n !== 3) throw new RangeError(`${where}: argument 'D' must be the tables of n = 3 (a triangle mesh is 3D), got n = ${checked.n}`);
+  if (checked.n !== 3)
+    throw new RangeError(`${where}: argument 'D' must be the tables of n = 3 (a triangle mesh is 3D), got n = ${checked.n}`);
   const tolerance = readTolerance(where, options);
   const merged = mergeTriangles(where, positions, indices, options);
   if (merged.vertexCount < 4) {

@@ -20,7 +20,9 @@ export function checkMassArguments(where: string, D: unknown, mass: unknown, sha
     throw new RangeError(`${where}: argument 'mass' must be > 0 (a static body has no mass properties), got ${m}`);
   }
   if (!(m >= inputLimits.minMass && m <= inputLimits.maxMass)) {
-    throw new RangeError(`${where}: argument 'mass' must be within [${formatBound(inputLimits.minMass)}, ${formatBound(inputLimits.maxMass)}] kg (Body.limits), got ${m}`);
+    throw new RangeError(
+      `${where}: argument 'mass' must be within [${formatBound(inputLimits.minMass)}, ${formatBound(inputLimits.maxMass)}] kg (Body.limits), got ${m}`,
+    );
   }
   return dimsChecked;
 }
@@ -34,21 +36,19 @@ export function checkMassArguments(where: string, D: unknown, mass: unknown, sha
  *   ∫ x_i² dV / V about the centre of mass.
  * @param mass - total mass (kg); the covariance and inertia scale linearly with it.
  */
-export function diagonalMassProperties(
-  D: Dims,
-  volume: number,
-  unitCovariance: ArrayLike<number>,
-  mass: number,
-): MassProperties {
+export function diagonalMassProperties(D: Dims, volume: number, unitCovariance: ArrayLike<number>, mass: number): MassProperties {
   const covariance = new Float64Array(D.n);
   for (let i = 0; i < D.n; i += 1) {
     covariance[i] = mass * unitCovariance[i];
     // every shape factory bounds its sizes, so this holds for them; it guards against a new one
     if (!(covariance[i] > 0 && covariance[i] < Infinity)) {
-      throw new RangeError(`massProperties: the covariance[${i}] of mass ${mass} kg is ${covariance[i]}: the shape is too small or too large`);
+      throw new RangeError(
+        `massProperties: the covariance[${i}] of mass ${mass} kg is ${covariance[i]}: the shape is too small or too large`,
+      );
     }
   }
-  if (!(volume > 0 && volume < Infinity)) throw new RangeError(`massProperties: the shape's volume is ${volume}: too small or too large`);
+  if (!(volume > 0 && volume < Infinity))
+    throw new RangeError(`massProperties: the shape's volume is ${volume}: too small or too large`);
   const inertia = inertiaDiagonal(D, new Float64Array(D.k), covariance);
   return Object.freeze({ volume, covariance, inertia });
 }

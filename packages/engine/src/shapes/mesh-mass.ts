@@ -134,12 +134,7 @@ export function accumulateMeshMoments(
  * @throws TypeError for wrong types or lengths; RangeError for non-finite numbers, indices out
  *   of range, repeated indices in a facet, an open or inconsistently oriented mesh, or zero volume.
  */
-export function closedMeshMassProperties(
-  n: number,
-  vertices: unknown,
-  facets: unknown,
-  density = 1,
-): SolidMassProperties {
+export function closedMeshMassProperties(n: number, vertices: unknown, facets: unknown, density = 1): SolidMassProperties {
   const where = 'closedMeshMassProperties';
   checkDimension(where, n);
   const v = checkPoints(where, vertices, 'vertices', n);

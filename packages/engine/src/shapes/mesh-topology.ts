@@ -42,12 +42,7 @@ export interface BoundaryNames {
  * @param facets - flat facet indices, n per facet.
  * @param checkOrientation - false to check only that the boundary is closed.
  */
-export function checkClosedBoundary(
-  n: number,
-  facets: Int32Array,
-  names: BoundaryNames,
-  checkOrientation = true,
-): void {
+export function checkClosedBoundary(n: number, facets: Int32Array, names: BoundaryNames, checkOrientation = true): void {
   const facetCount = facets.length / n;
   const name = names.facet ?? ((f: number) => `'${names.facets}'[${f}]`);
   // value: 2*facet + (orientation bit) for a face seen once, -1 once it has its pair

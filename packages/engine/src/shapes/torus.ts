@@ -67,7 +67,8 @@ export function HyperTorus(
     planeI = checked.planeI[p];
     planeJ = checked.planeJ[p];
   } else if (isNumberList(plane)) {
-    if (plane.length !== 2) throw new TypeError(`${where}: argument 'plane' as a pair of axes must have length 2, got ${plane.length}`);
+    if (plane.length !== 2)
+      throw new TypeError(`${where}: argument 'plane' as a pair of axes must have length 2, got ${plane.length}`);
     const a = checkIndex(where, plane[0], 'plane[0]', 0, n - 1);
     const b = checkIndex(where, plane[1], 'plane[1]', 0, n - 1);
     if (a === b) throw new RangeError(`${where}: argument 'plane' must name two different axes, got [${a}, ${b}]`);

@@ -46,7 +46,9 @@ export function mergeTriangles(
   let corners: Int32Array;
   if (indices === undefined || indices === null) {
     if (count % 3 !== 0) {
-      throw new TypeError(`${where}: without 'indices', 'positions' must hold a multiple of 3 points (whole triangles), got ${count}`);
+      throw new TypeError(
+        `${where}: without 'indices', 'positions' must hold a multiple of 3 points (whole triangles), got ${count}`,
+      );
     }
     corners = new Int32Array(count);
     for (let i = 0; i < count; i += 1) corners[i] = i;

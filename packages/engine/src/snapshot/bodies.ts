@@ -69,7 +69,8 @@ export function readBody(r: SnapshotReader, D: Dims, shapes: readonly Shape[]): 
   const shape = shapes[shapeIndex]!;
   const name = r.bool() ? r.string() : undefined;
   const motion = r.u8();
-  if (motion !== MOTION_DYNAMIC && motion !== MOTION_KINEMATIC && motion !== MOTION_STATIC) r.fail(`a body has the unknown motion code ${motion}`);
+  if (motion !== MOTION_DYNAMIC && motion !== MOTION_KINEMATIC && motion !== MOTION_STATIC)
+    r.fail(`a body has the unknown motion code ${motion}`);
   const mass = r.f64();
   const invMass = r.f64();
   const friction = r.f64();
@@ -85,11 +86,19 @@ export function readBody(r: SnapshotReader, D: Dims, shapes: readonly Shape[]): 
   const poseDirty = r.bool();
   const pose = r.bool() ? r.f64s(n + n * n) : null;
   const proxyId = r.i32();
-  for (let i = 0; i < record.length; i += 1) if (!Number.isFinite(record[i])) r.fail(`a body's state holds the non-finite number ${record[i]}`);
-  if (!Number.isFinite(invMass) || !Number.isFinite(sleepTimer) || !Number.isFinite(boundingRadius)) r.fail('a body holds a non-finite number');
+  for (let i = 0; i < record.length; i += 1)
+    if (!Number.isFinite(record[i])) r.fail(`a body's state holds the non-finite number ${record[i]}`);
+  if (!Number.isFinite(invMass) || !Number.isFinite(sleepTimer) || !Number.isFinite(boundingRadius))
+    r.fail('a body holds a non-finite number');
   let body: Body;
   try {
-    body = new Body(D, { shape, type: TYPES[motion]!, mass, material: { friction, restitution }, ...(name === undefined ? {} : { name }) });
+    body = new Body(D, {
+      shape,
+      type: TYPES[motion]!,
+      mass,
+      material: { friction, restitution },
+      ...(name === undefined ? {} : { name }),
+    });
   } catch (error) {
     return r.fail(`a body cannot be rebuilt (${(error as Error).message})`);
   }

@@ -54,7 +54,8 @@ export function writeBroadphase(w: SnapshotWriter, bp: BroadphaseBase): void {
 
 function readIds(r: SnapshotReader, what: string, hw: number): Int32Array {
   const ids = r.i32s(r.count(`the ${what} count`, hw, 4));
-  for (let i = 0; i < ids.length; i += 1) if (ids[i]! < 0 || ids[i]! >= hw) r.fail(`the ${what} list holds the id ${ids[i]} outside [0, ${hw})`);
+  for (let i = 0; i < ids.length; i += 1)
+    if (ids[i]! < 0 || ids[i]! >= hw) r.fail(`the ${what} list holds the id ${ids[i]} outside [0, ${hw})`);
   return ids;
 }
 
@@ -96,7 +97,8 @@ export function readBroadphase(r: SnapshotReader, bp: BroadphaseBase): void {
     const key = keys[i]!;
     const a = Math.floor(key / PAIR_KEY_SCALE);
     const b = key - a * PAIR_KEY_SCALE;
-    if (!(a >= 0 && a < b && b < hw) || (i > 0 && !(keys[i - 1]! < key))) r.fail(`the broadphase pair key ${key} is not a sorted pair of ids`);
+    if (!(a >= 0 && a < b && b < hw) || (i > 0 && !(keys[i - 1]! < key)))
+      r.fail(`the broadphase pair key ${key} is not a sorted pair of ids`);
   }
   const state: BroadphaseState = {
     highWater: hw,

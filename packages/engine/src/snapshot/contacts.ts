@@ -126,7 +126,12 @@ export function writePendingEnds(w: SnapshotWriter, events: ContactEvents, refOf
 }
 
 /** Reads the pending end events written by {@link writePendingEnds} into `events`. */
-export function readPendingEnds(r: SnapshotReader, events: ContactEvents, bodies: readonly Body[], departed: readonly Body[]): void {
+export function readPendingEnds(
+  r: SnapshotReader,
+  events: ContactEvents,
+  bodies: readonly Body[],
+  departed: readonly Body[],
+): void {
   const count = r.count('the pending end event count', 1 << 26, 8);
   const pick = (ref: number): Body => {
     const body = ref >= 0 ? bodies[ref] : departed[-1 - ref];

@@ -38,7 +38,9 @@ type Internals = Record<string, unknown>;
 function privateF64(joint: Joint, name: string): Float64Array {
   const v = (joint as unknown as Internals)[name];
   if (!(v instanceof Float64Array)) {
-    throw new Error(`World.snapshot: ${joint.constructor.name} has no Float64Array field '${name}'; update packages/engine/src/snapshot/joints.ts`);
+    throw new Error(
+      `World.snapshot: ${joint.constructor.name} has no Float64Array field '${name}'; update packages/engine/src/snapshot/joints.ts`,
+    );
   }
   return v;
 }
@@ -46,7 +48,9 @@ function privateF64(joint: Joint, name: string): Float64Array {
 function privateI32(joint: Joint, name: string): Int32Array {
   const v = (joint as unknown as Internals)[name];
   if (!(v instanceof Int32Array)) {
-    throw new Error(`World.snapshot: ${joint.constructor.name} has no Int32Array field '${name}'; update packages/engine/src/snapshot/joints.ts`);
+    throw new Error(
+      `World.snapshot: ${joint.constructor.name} has no Int32Array field '${name}'; update packages/engine/src/snapshot/joints.ts`,
+    );
   }
   return v;
 }
@@ -54,13 +58,21 @@ function privateI32(joint: Joint, name: string): Int32Array {
 function privateNumber(joint: Joint, name: string): number {
   const v = (joint as unknown as Internals)[name];
   if (typeof v !== 'number') {
-    throw new Error(`World.snapshot: ${joint.constructor.name} has no number field '${name}'; update packages/engine/src/snapshot/joints.ts`);
+    throw new Error(
+      `World.snapshot: ${joint.constructor.name} has no number field '${name}'; update packages/engine/src/snapshot/joints.ts`,
+    );
   }
   return v;
 }
 
 /** The private rest frames (and plane) of each joint type, written and put back raw. */
-const FRAME_FIELDS: readonly (readonly string[])[] = [[], [], ['frameA', 'frameB'], ['planeValue', 'frameA', 'frameB'], ['frameA', 'frameB']];
+const FRAME_FIELDS: readonly (readonly string[])[] = [
+  [],
+  [],
+  ['frameA', 'frameB'],
+  ['planeValue', 'frameA', 'frameB'],
+  ['frameA', 'frameB'],
+];
 
 /** Type names of the joint classes (registry.ts), by kind code. */
 const NAMES = ['point', 'distance', 'fixed', 'hinge', 'subspace'];
@@ -68,7 +80,9 @@ const NAMES = ['point', 'distance', 'fixed', 'hinge', 'subspace'];
 function kindOf(joint: Joint): number {
   const kind = NAMES.indexOf(jointTypeName(joint.constructor) ?? '');
   if (kind < 0) {
-    throw new Error(`World.snapshot: a joint of type ${joint.constructor.name} is not supported by snapshots (known: PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint); add it to packages/engine/src/snapshot/joints.ts and register its class (registry.ts)`);
+    throw new Error(
+      `World.snapshot: a joint of type ${joint.constructor.name} is not supported by snapshots (known: PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint); add it to packages/engine/src/snapshot/joints.ts and register its class (registry.ts)`,
+    );
   }
   return kind;
 }
@@ -78,7 +92,9 @@ function classOf<C>(kind: number): C {
   const c = jointClass(NAMES[kind]!);
   if (typeof c !== 'function') {
     const name = `${NAMES[kind]![0]!.toUpperCase()}${NAMES[kind]!.slice(1)}Joint`;
-    throw new Error(`restoreWorld: the snapshot holds a ${name}, and this program never loaded it; reference ${name} from @physin/engine before restoring`);
+    throw new Error(
+      `restoreWorld: the snapshot holds a ${name}, and this program never loaded it; reference ${name} from @physin/engine before restoring`,
+    );
   }
   return c as C;
 }
@@ -153,7 +169,11 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
         joint = new (classOf<typeof PointJoint>(kind))(a, b, anchorA, anchorB, common);
         break;
       case KIND_DISTANCE:
-        joint = new (classOf<typeof DistanceJoint>(kind))(a, b, anchorA, anchorB, { ...common, rest: state[JS_COMMON_COUNT]!, mode: MODES[modeIndex]! });
+        joint = new (classOf<typeof DistanceJoint>(kind))(a, b, anchorA, anchorB, {
+          ...common,
+          rest: state[JS_COMMON_COUNT]!,
+          mode: MODES[modeIndex]!,
+        });
         break;
       case KIND_FIXED:
         joint = new (classOf<typeof FixedJoint>(kind))(a, b, anchorA, anchorB, common);
@@ -175,7 +195,8 @@ export function readJoint(r: SnapshotReader, D: Dims, bodies: readonly Body[]): 
     if (error instanceof Error && error.message.startsWith('restoreWorld')) throw error;
     return r.fail(`a joint cannot be rebuilt (${(error as Error).message})`);
   }
-  if (joint.state.length !== state.length || joint.lambda.length !== lambda.length) r.fail('a joint has arrays of the wrong length');
+  if (joint.state.length !== state.length || joint.lambda.length !== lambda.length)
+    r.fail('a joint has arrays of the wrong length');
   const names = FRAME_FIELDS[kind]!;
   for (let i = 0; i < names.length; i += 1) {
     if (privateF64(joint, names[i]!).length !== frames[i]!.length) r.fail(`a joint's '${names[i]}' has the wrong length`);

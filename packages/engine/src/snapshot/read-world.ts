@@ -44,7 +44,9 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   const steps = r.f64();
   const pending = r.f64();
   if (!Number.isFinite(time) || !(Number.isInteger(steps) && steps >= 0) || !Number.isFinite(pending)) {
-    r.fail(`the clock (time ${time}, steps ${steps}, pending ${pending}) is not a finite time, a step count and a finite remainder`);
+    r.fail(
+      `the clock (time ${time}, steps ${steps}, pending ${pending}) is not a finite time, a step count and a finite remainder`,
+    );
   }
   const boundsStale = r.bool();
 

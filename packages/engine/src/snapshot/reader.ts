@@ -23,11 +23,14 @@ export class SnapshotReader {
    */
   constructor(bytes: unknown) {
     if (!(bytes instanceof Uint8Array)) {
-      const got = bytes === null ? 'null' : typeof bytes === 'object' ? (bytes as object).constructor?.name ?? 'object' : typeof bytes;
+      const got =
+        bytes === null ? 'null' : typeof bytes === 'object' ? ((bytes as object).constructor?.name ?? 'object') : typeof bytes;
       throw new TypeError(`${FN}: argument 'bytes' must be a Uint8Array (from snapshotWorld(world)), got ${got}`);
     }
     if (bytes.length < SNAPSHOT_HEADER_BYTES) {
-      throw new RangeError(`${FN}: argument 'bytes' is truncated: ${bytes.length} bytes, shorter than the ${SNAPSHOT_HEADER_BYTES}-byte snapshot header`);
+      throw new RangeError(
+        `${FN}: argument 'bytes' is truncated: ${bytes.length} bytes, shorter than the ${SNAPSHOT_HEADER_BYTES}-byte snapshot header`,
+      );
     }
     for (let i = 0; i < 4; i += 1) {
       if (bytes[i] !== SNAPSHOT_MAGIC[i]) {
@@ -37,14 +40,18 @@ export class SnapshotReader {
     const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
     const version = view.getUint32(4, true);
     if (version !== SNAPSHOT_VERSION) {
-      throw new RangeError(`${FN}: argument 'bytes' is a snapshot of format version ${version}; this build reads version ${SNAPSHOT_VERSION} only`);
+      throw new RangeError(
+        `${FN}: argument 'bytes' is a snapshot of format version ${version}; this build reads version ${SNAPSHOT_VERSION} only`,
+      );
     }
     const length = view.getUint32(8, true);
     if (bytes.length < length) {
       throw new RangeError(`${FN}: argument 'bytes' is truncated: ${bytes.length} bytes of a ${length}-byte snapshot`);
     }
     if (bytes.length > length) {
-      throw new RangeError(`${FN}: argument 'bytes' has ${bytes.length - length} bytes past the end of its ${length}-byte snapshot`);
+      throw new RangeError(
+        `${FN}: argument 'bytes' has ${bytes.length - length} bytes past the end of its ${length}-byte snapshot`,
+      );
     }
     const sum = view.getUint32(12, true);
     if (fnv1a(bytes, SNAPSHOT_HEADER_BYTES, length) !== sum) {
@@ -61,7 +68,9 @@ export class SnapshotReader {
 
   private need(size: number): void {
     if (this.at + size > this.bytes.length) {
-      throw new RangeError(`${FN}: argument 'bytes' is truncated: a field at byte ${this.at} needs ${size} bytes, ${this.bytes.length - this.at} are left`);
+      throw new RangeError(
+        `${FN}: argument 'bytes' is truncated: a field at byte ${this.at} needs ${size} bytes, ${this.bytes.length - this.at} are left`,
+      );
     }
   }
 
@@ -102,7 +111,9 @@ export class SnapshotReader {
     const v = this.u32();
     if (v > max) this.fail(`${what} is ${v}, more than ${max}`);
     if (bytesEach > 0 && v * bytesEach > this.remaining) {
-      throw new RangeError(`${FN}: argument 'bytes' is truncated: ${what} is ${v}, and ${this.remaining} bytes are left for them`);
+      throw new RangeError(
+        `${FN}: argument 'bytes' is truncated: ${what} is ${v}, and ${this.remaining} bytes are left for them`,
+      );
     }
     return v;
   }

@@ -72,7 +72,9 @@ function f64(r: SnapshotReader, f: Fields, name: string): Float64Array {
 function factory<F>(kind: string, name: string): F {
   const f = shapeFactory(kind);
   if (typeof f !== 'function') {
-    throw new Error(`restoreWorld: the snapshot holds a shape of kind '${kind}', and this program never loaded ${name}; reference ${name} from @physin/engine before restoring`);
+    throw new Error(
+      `restoreWorld: the snapshot holds a shape of kind '${kind}', and this program never loaded ${name}; reference ${name} from @physin/engine before restoring`,
+    );
   }
   return f as F;
 }
@@ -134,7 +136,9 @@ function unitMass(D: Dims, shape: Shape): MassProperties | null {
 export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
   const kind = String(shape.kind);
   if (!hasOwn(REBUILD, kind)) {
-    throw new Error(`World.snapshot: a body has a shape of kind '${kind}', which snapshots do not support yet (known: ${SNAPSHOT_SHAPE_KINDS.join(', ')}); add it to packages/engine/src/snapshot/shapes.ts`);
+    throw new Error(
+      `World.snapshot: a body has a shape of kind '${kind}', which snapshots do not support yet (known: ${SNAPSHOT_SHAPE_KINDS.join(', ')}); add it to packages/engine/src/snapshot/shapes.ts`,
+    );
   }
   w.string(kind);
   const mp = unitMass(D, shape);
@@ -176,7 +180,9 @@ export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
       w.u32(value.length);
       w.u8s(value);
     } else {
-      throw new Error(`World.snapshot: shape kind '${kind}' has a field '${name}' of a type snapshots cannot store (${typeof value}); extend packages/engine/src/snapshot/shapes.ts`);
+      throw new Error(
+        `World.snapshot: shape kind '${kind}' has a field '${name}' of a type snapshots cannot store (${typeof value}); extend packages/engine/src/snapshot/shapes.ts`,
+      );
     }
   }
 }

@@ -31,7 +31,8 @@ import { writeWorldSnapshot } from './write-world.js';
  *   does not know (it names the kind).
  */
 export function snapshotWorld(world: WorldBase): Uint8Array {
-  if (!(world instanceof WorldBase)) throw new TypeError(`snapshotWorld: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
+  if (!(world instanceof WorldBase))
+    throw new TypeError(`snapshotWorld: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
   return writeWorldSnapshot(world, world.snapshotParts());
 }
 

@@ -48,7 +48,9 @@ export function writeWorldSnapshot(world: World, parts: WorldParts): Uint8Array 
       w.u8(PARAM_NUMBER);
       w.f64(value);
     } else {
-      throw new Error(`World.snapshot: parameter '${name}' is a ${typeof value}; snapshots store numbers and booleans (update packages/engine/src/snapshot/write-world.ts)`);
+      throw new Error(
+        `World.snapshot: parameter '${name}' is a ${typeof value}; snapshots store numbers and booleans (update packages/engine/src/snapshot/write-world.ts)`,
+      );
     }
   }
   w.f64s(world.gravity, 0, n);
@@ -94,6 +96,8 @@ export function writeWorldSnapshot(world: World, parts: WorldParts): Uint8Array 
   w.f64s(parts.reach, 0, bodies.length);
   writeBroadphase(w, parts.broadphase);
   writeContacts(w, D, parts.contacts, indexOf);
-  writePendingEnds(w, parts.events, (body) => (bodies[body.worldIndex] === body ? body.worldIndex : -1 - departedIndex.get(body)!));
+  writePendingEnds(w, parts.events, (body) =>
+    bodies[body.worldIndex] === body ? body.worldIndex : -1 - departedIndex.get(body)!,
+  );
   return w.finish();
 }

@@ -102,7 +102,9 @@ export class PolytopeCut {
     if (!(Math.abs(det) > 1e-6 * Math.sqrt(l0 * l1 * l2))) return false;
     const u = this.corners;
     // u_0 = (a1 × a2)/det, u_1 = (a2 × a0)/det, u_2 = (a0 × a1)/det
-    u[0] = c00 / det; u[1] = c01 / det; u[2] = c02 / det;
+    u[0] = c00 / det;
+    u[1] = c01 / det;
+    u[2] = c02 / det;
     u[3] = (a[7]! * a[2]! - a[8]! * a[1]!) / det;
     u[4] = (a[8]! * a[0]! - a[6]! * a[2]!) / det;
     u[5] = (a[6]! * a[1]! - a[7]! * a[0]!) / det;
@@ -307,7 +309,10 @@ export class PolytopeCut {
       }
       if (seen) continue;
       this.order[unique] = i;
-      this.angle[unique] = pseudoAngle((x - cx) * ex + (y - cy) * ey + (z - cz) * ez, (x - cx) * fx + (y - cy) * fy + (z - cz) * fz);
+      this.angle[unique] = pseudoAngle(
+        (x - cx) * ex + (y - cy) * ey + (z - cz) * ez,
+        (x - cx) * fx + (y - cy) * fy + (z - cz) * fz,
+      );
       unique += 1;
     }
     if (unique < 3) return;

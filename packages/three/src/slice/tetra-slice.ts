@@ -34,7 +34,10 @@ export class TetraSlicer {
     const nv = v.length / 4;
     for (let i = 0; i < nv; i += 1) for (let c = 0; c < 4; c += 1) centre[c]! += v[4 * i + c]! / nv;
     for (let t = 0; t < count; t += 1) {
-      const a = 4 * this.cells[4 * t]!, b = 4 * this.cells[4 * t + 1]!, c = 4 * this.cells[4 * t + 2]!, d = 4 * this.cells[4 * t + 3]!;
+      const a = 4 * this.cells[4 * t]!,
+        b = 4 * this.cells[4 * t + 1]!,
+        c = 4 * this.cells[4 * t + 2]!,
+        d = 4 * this.cells[4 * t + 3]!;
       const e = [0, 1, 2].map((q) => {
         const o = [b, c, d][q]!;
         return [v[o]! - v[a]!, v[o + 1]! - v[a + 1]!, v[o + 2]! - v[a + 2]!, v[o + 3]! - v[a + 3]!];
@@ -62,7 +65,13 @@ export class TetraSlicer {
    * column c the world direction of body axis c). Writes triangles relative to (x0, x1, x2) and
    * returns the vertex count.
    */
-  slice(positions: Float32Array, normals: Float32Array, x: ArrayLike<number>, M: ArrayLike<number>, slice: ArrayLike<number>): number {
+  slice(
+    positions: Float32Array,
+    normals: Float32Array,
+    x: ArrayLike<number>,
+    M: ArrayLike<number>,
+    slice: ArrayLike<number>,
+  ): number {
     const v = this.vertices;
     const w = this.world;
     const nv = v.length / 4;
@@ -91,14 +100,17 @@ export class TetraSlicer {
       for (let a = 0; a < 4; a += 1) {
         for (let b = a + 1; b < 4; b += 1) {
           if (((mask >> a) & 1) === ((mask >> b) & 1)) continue;
-          const ia = 4 * cells[4 * t + a]!, ib = 4 * cells[4 * t + b]!;
+          const ia = 4 * cells[4 * t + a]!,
+            ib = 4 * cells[4 * t + b]!;
           const k = w[ia + 3]! / (w[ia + 3]! - w[ib + 3]!);
           for (let c = 0; c < 3; c += 1) p[3 * count + c] = w[ia + c]! + k * (w[ib + c]! - w[ia + c]!);
           count += 1;
         }
       }
       // the cell's normal in the world, projected to xyz
-      let nx = 0, ny = 0, nz = 0;
+      let nx = 0,
+        ny = 0,
+        nz = 0;
       for (let c = 0; c < 4; c += 1) {
         const b = this.cellNormals[4 * t + c]!;
         nx += M[c]! * b;
@@ -107,7 +119,9 @@ export class TetraSlicer {
       }
       const len = Math.sqrt(nx * nx + ny * ny + nz * nz);
       if (len < 1e-12) continue;
-      nx /= len; ny /= len; nz /= len;
+      nx /= len;
+      ny /= len;
+      nz /= len;
       if (at + 9 * (count - 2) > limit) break;
       at = this.triangle(positions, normals, at, 0, 1, 2, nx, ny, nz);
       // a quad's crossings in cyclic order are 0-1-3-2
@@ -116,10 +130,24 @@ export class TetraSlicer {
     return (at / 3) | 0;
   }
 
-  private triangle(positions: Float32Array, normals: Float32Array, at: number, a: number, b: number, c: number, nx: number, ny: number, nz: number): number {
+  private triangle(
+    positions: Float32Array,
+    normals: Float32Array,
+    at: number,
+    a: number,
+    b: number,
+    c: number,
+    nx: number,
+    ny: number,
+    nz: number,
+  ): number {
     const p = this.p;
-    const e1x = p[3 * b]! - p[3 * a]!, e1y = p[3 * b + 1]! - p[3 * a + 1]!, e1z = p[3 * b + 2]! - p[3 * a + 2]!;
-    const e2x = p[3 * c]! - p[3 * a]!, e2y = p[3 * c + 1]! - p[3 * a + 1]!, e2z = p[3 * c + 2]! - p[3 * a + 2]!;
+    const e1x = p[3 * b]! - p[3 * a]!,
+      e1y = p[3 * b + 1]! - p[3 * a + 1]!,
+      e1z = p[3 * b + 2]! - p[3 * a + 2]!;
+    const e2x = p[3 * c]! - p[3 * a]!,
+      e2y = p[3 * c + 1]! - p[3 * a + 1]!,
+      e2z = p[3 * c + 2]! - p[3 * a + 2]!;
     const turn = (e1y * e2z - e1z * e2y) * nx + (e1z * e2x - e1x * e2z) * ny + (e1x * e2y - e1y * e2x) * nz;
     const second = turn >= 0 ? b : c;
     const third = turn >= 0 ? c : b;

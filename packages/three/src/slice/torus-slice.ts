@@ -36,10 +36,22 @@ function tables(): RingTables {
 const GRID = 20;
 /** Corner offsets of the unit cube, and its split into six tetrahedra along the main diagonal. */
 const CORNER = [
-  [0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1],
+  [0, 0, 0],
+  [1, 0, 0],
+  [0, 1, 0],
+  [1, 1, 0],
+  [0, 0, 1],
+  [1, 0, 1],
+  [0, 1, 1],
+  [1, 1, 1],
 ] as const;
 const TETS = [
-  [0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7],
+  [0, 1, 3, 7],
+  [0, 3, 2, 7],
+  [0, 2, 6, 7],
+  [0, 6, 4, 7],
+  [0, 4, 5, 7],
+  [0, 5, 1, 7],
 ] as const;
 
 /** Where a torus sits: its shape numbers, and the body's position and rotation. */
@@ -99,7 +111,9 @@ export class TorusSlicer {
    * flat-shaded normals pointing out) and returns the vertex count, 0 when the flat misses it.
    */
   slice(positions: Float32Array, normals: Float32Array, pose: TorusPose, slice: ArrayLike<number>): number {
-    return this.isExact(pose) ? this.sliceExact(positions, normals, pose, slice) : this.sliceMarching(positions, normals, pose, slice);
+    return this.isExact(pose)
+      ? this.sliceExact(positions, normals, pose, slice)
+      : this.sliceMarching(positions, normals, pose, slice);
   }
 
   /** The exact path: a 3D torus of tube radius √(r² − d²). */
@@ -116,15 +130,28 @@ export class TorusSlicer {
     const R = pose.majorRadius;
     const M = pose.M;
     // u, v: the major plane's axes in xyz; w = u × v its normal.
-    const ux = M[pose.planeI]!, uy = M[n + pose.planeI]!, uz = M[2 * n + pose.planeI]!;
-    const vx = M[pose.planeJ]!, vy = M[n + pose.planeJ]!, vz = M[2 * n + pose.planeJ]!;
-    const wx = uy * vz - uz * vy, wy = uz * vx - ux * vz, wz = ux * vy - uy * vx;
+    const ux = M[pose.planeI]!,
+      uy = M[n + pose.planeI]!,
+      uz = M[2 * n + pose.planeI]!;
+    const vx = M[pose.planeJ]!,
+      vy = M[n + pose.planeJ]!,
+      vz = M[2 * n + pose.planeJ]!;
+    const wx = uy * vz - uz * vy,
+      wy = uz * vx - ux * vz,
+      wz = ux * vy - uy * vx;
     const frame = this.p;
-    frame[0] = ux; frame[1] = uy; frame[2] = uz;
-    frame[3] = vx; frame[4] = vy; frame[5] = vz;
-    frame[6] = wx; frame[7] = wy; frame[8] = wz;
+    frame[0] = ux;
+    frame[1] = uy;
+    frame[2] = uz;
+    frame[3] = vx;
+    frame[4] = vy;
+    frame[5] = vz;
+    frame[6] = wx;
+    frame[7] = wy;
+    frame[8] = wz;
     // the radii travel in the scratch too: doubles passed as arguments would be boxed
-    frame[9] = R; frame[10] = tube;
+    frame[9] = R;
+    frame[10] = tube;
     let at = 0;
     for (let i = 0; i < MAJOR_SEGMENTS; i += 1) {
       for (let j = 0; j < MINOR_SEGMENTS; j += 1) {
@@ -145,10 +172,17 @@ export class TorusSlicer {
     const R = f[9]!;
     const tube = f[10]!;
     const t = this.rings;
-    const ca = t.cosMajor[i]!, sa = t.sinMajor[i]!, cb = t.cosMinor[j]!, sb = t.sinMinor[j]!;
-    const rx = ca * f[0]! + sa * f[3]!, ry = ca * f[1]! + sa * f[4]!, rz = ca * f[2]! + sa * f[5]!;
+    const ca = t.cosMajor[i]!,
+      sa = t.sinMajor[i]!,
+      cb = t.cosMinor[j]!,
+      sb = t.sinMinor[j]!;
+    const rx = ca * f[0]! + sa * f[3]!,
+      ry = ca * f[1]! + sa * f[4]!,
+      rz = ca * f[2]! + sa * f[5]!;
     // outward normal: cos b · radial + sin b · w
-    const nx = cb * rx + sb * f[6]!, ny = cb * ry + sb * f[7]!, nz = cb * rz + sb * f[8]!;
+    const nx = cb * rx + sb * f[6]!,
+      ny = cb * ry + sb * f[7]!,
+      nz = cb * rz + sb * f[8]!;
     positions[at] = R * rx + tube * nx;
     positions[at + 1] = R * ry + tube * ny;
     positions[at + 2] = R * rz + tube * nz;
@@ -177,7 +211,8 @@ export class TorusSlicer {
       for (let row = 3; row < n; row += 1) s += M[row * n + c]! * (slice[row - 3]! - pose.x[row]!);
       local[c] = s;
     }
-    const i = pose.planeI, j = pose.planeJ;
+    const i = pose.planeI,
+      j = pose.planeJ;
     const rho = Math.sqrt(local[i]! * local[i]! + local[j]! * local[j]!);
     const R = pose.majorRadius;
     let f = (rho - R) * (rho - R);
@@ -250,7 +285,8 @@ export class TorusSlicer {
             for (let a = 0; a < 4; a += 1) {
               for (let b = a + 1; b < 4; b += 1) {
                 if (((below >> a) & 1) === ((below >> b) & 1)) continue;
-                const ca = CORNER[tet[a]!]!, cb = CORNER[tet[b]!]!;
+                const ca = CORNER[tet[a]!]!,
+                  cb = CORNER[tet[b]!]!;
                 const fa = values[((z + ca[2]) * side + y + ca[1]) * side + x + ca[0]]!;
                 const fb = values[((z + cb[2]) * side + y + cb[1]) * side + x + cb[0]]!;
                 const t = fa / (fa - fb);
@@ -276,8 +312,14 @@ export class TorusSlicer {
 
   /** Writes triangle (a, b, c) of the crossing points, wound so that its normal points out. */
   private emit(
-    positions: Float32Array, normals: Float32Array, at: number, pose: TorusPose, slice: ArrayLike<number>,
-    a: number, b: number, c: number,
+    positions: Float32Array,
+    normals: Float32Array,
+    at: number,
+    pose: TorusPose,
+    slice: ArrayLike<number>,
+    a: number,
+    b: number,
+    c: number,
   ): number {
     const p = this.p;
     const g = this.g;
@@ -287,15 +329,25 @@ export class TorusSlicer {
       this.q[1] = p[3 * q + 1]!;
       this.q[2] = p[3 * q + 2]!;
       this.field(pose, slice);
-      const len = Math.sqrt(this.point[0]! * this.point[0]! + this.point[1]! * this.point[1]! + this.point[2]! * this.point[2]!) || 1;
+      const len =
+        Math.sqrt(this.point[0]! * this.point[0]! + this.point[1]! * this.point[1]! + this.point[2]! * this.point[2]!) || 1;
       g[3 * q] = this.point[0]! / len;
       g[3 * q + 1] = this.point[1]! / len;
       g[3 * q + 2] = this.point[2]! / len;
     }
-    const e1x = p[3 * b]! - p[3 * a]!, e1y = p[3 * b + 1]! - p[3 * a + 1]!, e1z = p[3 * b + 2]! - p[3 * a + 2]!;
-    const e2x = p[3 * c]! - p[3 * a]!, e2y = p[3 * c + 1]! - p[3 * a + 1]!, e2z = p[3 * c + 2]! - p[3 * a + 2]!;
-    const cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
-    const out = cx * (g[3 * a]! + g[3 * b]! + g[3 * c]!) + cy * (g[3 * a + 1]! + g[3 * b + 1]! + g[3 * c + 1]!) + cz * (g[3 * a + 2]! + g[3 * b + 2]! + g[3 * c + 2]!);
+    const e1x = p[3 * b]! - p[3 * a]!,
+      e1y = p[3 * b + 1]! - p[3 * a + 1]!,
+      e1z = p[3 * b + 2]! - p[3 * a + 2]!;
+    const e2x = p[3 * c]! - p[3 * a]!,
+      e2y = p[3 * c + 1]! - p[3 * a + 1]!,
+      e2z = p[3 * c + 2]! - p[3 * a + 2]!;
+    const cx = e1y * e2z - e1z * e2y,
+      cy = e1z * e2x - e1x * e2z,
+      cz = e1x * e2y - e1y * e2x;
+    const out =
+      cx * (g[3 * a]! + g[3 * b]! + g[3 * c]!) +
+      cy * (g[3 * a + 1]! + g[3 * b + 1]! + g[3 * c + 1]!) +
+      cz * (g[3 * a + 2]! + g[3 * b + 2]! + g[3 * c + 2]!);
     const order0 = a;
     const order1 = out >= 0 ? b : c;
     const order2 = out >= 0 ? c : b;

@@ -631,6 +631,7 @@ describe('seeded fuzzing: 2,000 calls with extreme values either throw before ch
         } catch (e) {
           throw new Error(
             `call ${c} (${calls.indexOf(call)}) on ${body.label} (m ${body.mass}, I ${[...body.inertia]}, v ${[...body.v]}, w ${[...body.w]}, f ${[...body.force]}, t ${[...body.torque]}): ${String(e)}`,
+            { cause: e },
           );
         }
         expectFinite(world);

@@ -155,6 +155,7 @@ function fromTriangles(D: Dims, positions: unknown, indices?: unknown, options: 
       // the usual cause: copies of a corner that differ by rounding (three.js sphere seams and poles)
       throw new RangeError(
         `${error.message}. Copies of a position that differ by rounding are not merged by default: pass options.mergeTolerance`,
+        { cause: error },
       );
     }
     throw error;

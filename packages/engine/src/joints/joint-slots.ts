@@ -18,5 +18,14 @@ export const JS_FORCE = 4;
 export const JS_TORQUE = 5;
 /** @internal The sub-step h of the last solve (s). */
 export const JS_H = 6;
+/**
+ * @internal The largest row error the solver left at the end of the last sub-step (m for linear
+ * rows, rad for angular ones; 0 for a soft joint): see `Joint.lastError`.
+ */
+export const JS_ERROR = 7;
+/** @internal Sub-steps that ended with the error past the stretch threshold (see `Joint.stretchCount`). */
+export const JS_STRETCH_COUNT = 8;
+/** @internal The stretch threshold of the last sub-step (m or rad): 10 × constraintSlop. */
+export const JS_STRETCH_LIMIT = 9;
 /** @internal First index free for the joint types. */
-export const JS_COMMON_COUNT = 7;
+export const JS_COMMON_COUNT = 10;

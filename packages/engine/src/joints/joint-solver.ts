@@ -40,7 +40,18 @@ import type { SolverBodies } from '../solver/solver-bodies.js';
 import { bivectorRotationInto, reverseInto } from './frames.js';
 import { JointTree } from './joint-tree.js';
 import type { Joint } from './joint.js';
-import { JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_DAMPING, JS_FORCE, JS_H, JS_HERTZ, JS_TORQUE } from './joint-slots.js';
+import {
+  JS_BREAK_FORCE,
+  JS_BREAK_TORQUE,
+  JS_DAMPING,
+  JS_ERROR,
+  JS_FORCE,
+  JS_H,
+  JS_HERTZ,
+  JS_STRETCH_COUNT,
+  JS_STRETCH_LIMIT,
+  JS_TORQUE,
+} from './joint-slots.js';
 import { SOFT_BIAS_RATE, SOFT_COUNT, SOFT_DAMPING, SOFT_H, SOFT_HERTZ, SOFT_IMPULSE_SCALE, SOFT_MASS_SCALE, softStep } from './soft.js';
 
 /** Row kind: linear (counts toward breakForce). */
@@ -81,6 +92,16 @@ const SC_COUNT = 13;
 
 /** Gauss–Seidel passes of the end-of-sub-step velocity projection over the joints outside the tree. */
 const VELOCITY_PROJECTION_PASSES = 3;
+
+/**
+ * The position projection runs its `iterations` passes, then more while a rigid equality row is
+ * still off by more than this fraction of `constraintSlop`, up to `iterations` × the factor below.
+ */
+const POSITION_TOLERANCE = 0.01;
+const POSITION_PASSES_FACTOR = 4;
+
+/** A rigid joint whose error ends a sub-step past this × constraintSlop is stretched. */
+const STRETCH_FACTOR = 10;
 
 /** Below this fraction of the largest diagonal a Cholesky pivot drops its row. */
 const PIVOT_TOLERANCE = 1e-12;
@@ -128,11 +149,20 @@ export class JointSolver {
   /** @internal 1 while the rebuilt rows match the prepared ones (rowTarget applies). */
   layoutOk = 1;
   private rowKind = new Int32Array(16);
-  private rowKey = new Int32Array(16);
+  /** @internal Per row: its key in `Joint.lambda`. */
+  rowKey = new Int32Array(16);
   private factor = new Float64Array(64);
   private factorSize = 0;
   /** 1/m_A + 1/m_B of the joint whose masses were computed last. */
   private blockMass = 0;
+
+  /**
+   * Rigid joints whose error at the end of the last sub-step passed the stretch threshold
+   * (10 × constraintSlop, m or rad; see `Joint.stretched`).
+   */
+  stretchedCount = 0;
+  /** Sum of `stretchedCount` over every sub-step solved so far. */
+  stretchTotal = 0;
 
   /** Joints that broke in the last `store` (their count in `brokenCount`). */
   broken: Joint[] = [];
@@ -247,7 +277,11 @@ export class JointSolver {
       this.finishJoint(sb, j, warm);
     }
     this.prepRows = this.rowCount;
-    if (this.count > 0 && this.tree.build(this, sb) > 0) this.tree.factor(this, sb);
+    if (this.count > 0 && this.tree.build(this, sb) > 0) {
+      this.tree.stiffness = h;
+      this.tree.factor(this, sb);
+      this.tree.stiffness = 0;
+    }
     return this.count;
   }
 
@@ -578,7 +612,14 @@ export class JointSolver {
       const b = this.jB[j];
       const first = this.jFirst[j];
       const last = first + this.jRows[j];
-      for (let q = first; q < last; q += 1) {
+      // The equality rows of the tree start from 0: the tree solve is exact without a warm start,
+      // and it solves with the stiffened inertia, which an impulse applied here would not see.
+      let from = first;
+      if (this.tree.role[j] !== 0) {
+        from = first + this.jBlock[j];
+        for (let q = first; q < from; q += 1) this.lambdaRow[q] = 0;
+      }
+      for (let q = from; q < last; q += 1) {
         const l = this.lambdaRow[q];
         if (l === 0) continue;
         this.sc[SC_DL] = l;
@@ -699,7 +740,9 @@ export class JointSolver {
         K.toMatrix(B.pose!.M, B.R);
       }
     }
-    for (let it = 0; it < iterations; it += 1) {
+    const tolerance = POSITION_TOLERANCE * this.sc[SC_SLOP];
+    const most = iterations * POSITION_PASSES_FACTOR;
+    for (let it = 0; it < most; it += 1) {
       // Rows from the current poses (the impulses were stored already).
       this.rowCount = 0;
       this.factorSize = 0;
@@ -711,10 +754,14 @@ export class JointSolver {
         this.joints[j].buildRows(this, j);
       }
       this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+      // Past the `iterations` passes, the projection goes on only while an error is left.
+      if (it >= iterations && this.rigidResidual() <= tolerance) break;
       // The tree is factored again at the current poses (with the Jacobians of the start of
-      // the sub-step, a whipping chain's projection diverges).
+      // the sub-step, a whipping chain's projection diverges), with the geometric stiffness.
       if (this.tree.build(this, sb) > 0) {
+        this.tree.stiffness = this.sc[SC_H];
         this.tree.factor(this, sb);
+        this.tree.stiffness = 0;
         this.tree.solvePositions(this, sb);
       }
       for (let j = 0; j < this.count; j += 1) {
@@ -730,6 +777,26 @@ export class JointSolver {
   }
 
   /**
+   * The largest |C − target| over the equality rows of the rigid joints (rows just built): what
+   * the position projection has left to remove.
+   */
+  private rigidResidual(): number {
+    const RS = this.RS;
+    const rows = this.rows;
+    const ok = this.layoutOk === 1;
+    let worst = 0;
+    for (let j = 0; j < this.count; j += 1) {
+      if (this.jSoft[j] !== 0) continue;
+      const first = this.jFirst[j];
+      for (let q = first; q < first + this.jBlock[j]; q += 1) {
+        const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
+        if (e > worst) worst = e;
+      }
+    }
+    return worst;
+  }
+
+  /**
    * Velocity projection at the end of the sub-step: the equality rows of the rigid joints,
    * rebuilt at the final poses with the final world inertia, get Ċ = 0 (the tree exactly, the
    * other rigid joints by `VELOCITY_PROJECTION_PASSES` block passes). v and L change by the
@@ -739,6 +806,7 @@ export class JointSolver {
    */
   private projectVelocities(sb: SolverBodies): void {
     const { n, k } = this;
+    this.stretchedCount = 0;
     // Current inertia and velocities into the slots of the joint bodies.
     for (let s2 = 1; s2 < sb.count; s2 += 1) {
       const body = sb.bodies[s2]!;
@@ -751,8 +819,13 @@ export class JointSolver {
       this.jFirst[j] = this.rowCount;
       this.jBlock[j] = 0;
       this.jRows[j] = 0;
-      if (this.joints[j].brokenFlag || this.jSoft[j] !== 0) continue;
-      this.joints[j].buildRows(this, j);
+      const joint = this.joints[j];
+      if (joint.brokenFlag || this.jSoft[j] !== 0) {
+        joint.state[JS_ERROR] = 0;
+        continue;
+      }
+      joint.buildRows(this, j);
+      this.measureStretch(j);
       // Scalar rows (motor, limits) take no part.
       this.rowCount = this.jFirst[j] + this.jBlock[j];
       this.jRows[j] = this.jBlock[j];
@@ -769,7 +842,9 @@ export class JointSolver {
       }
     }
     if (this.tree.build(this, sb) > 0) {
+      this.tree.stiffness = this.sc[SC_H];
       this.tree.factor(this, sb);
+      this.tree.stiffness = 0;
       this.tree.solveVelocities(this, sb);
     }
     let gs = 0;
@@ -791,6 +866,45 @@ export class JointSolver {
         L[r] += dL;
       }
       body.omegaFromMomentum();
+    }
+  }
+
+  /**
+   * Joint j's error at the end of the sub-step, from its rows just built at the final poses: the
+   * largest of |C| over its linear equality rows (m), |C| over its angular ones (rad) and the
+   * violation of an inequality row (a rope longer than its rest, a hinge past a limit); past
+   * 10 × constraintSlop the joint is stretched.
+   */
+  private measureStretch(j: number): void {
+    const RS = this.RS;
+    const rows = this.rows;
+    const first = this.jFirst[j];
+    let lin = 0;
+    let ang = 0;
+    let worst = 0;
+    for (let q = first; q < first + this.jRows[j]; q += 1) {
+      const S = q * RS + this.OFF_S;
+      const C = rows[S + 6];
+      const type = rows[S + 7];
+      if (type === ROW_EQUAL) {
+        if (this.rowKind[q] === KIND_LINEAR) lin += C * C;
+        else ang += C * C;
+      } else if (type === ROW_INEQUAL && -C > worst) {
+        worst = -C;
+      }
+    }
+    lin = Math.sqrt(lin);
+    ang = Math.sqrt(ang);
+    if (lin > worst) worst = lin;
+    if (ang > worst) worst = ang;
+    const st = this.joints[j].state;
+    const limit = STRETCH_FACTOR * this.sc[SC_SLOP];
+    st[JS_ERROR] = worst;
+    st[JS_STRETCH_LIMIT] = limit;
+    if (worst > limit) {
+      st[JS_STRETCH_COUNT] += 1;
+      this.stretchedCount += 1;
+      this.stretchTotal += 1;
     }
   }
 

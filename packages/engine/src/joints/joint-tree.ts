@@ -279,6 +279,36 @@ export class JointTree {
     return s * rows[base + (isB ? js.OFF_JB : js.OFF_JA) + (c - n)];
   }
 
+  /**
+   * The scale of the geometric stiffness added to the angular blocks by the next `factor`: the
+   * sub-step h for the velocity passes, the position projection and the velocity projection; 0
+   * for none (see docs/joints.md, "Heavy loads: the geometric stiffness").
+   */
+  stiffness = 0;
+
+  /**
+   * |λ| · |J_angular| of joint j's equality rows on the body in `slot` (N·s·m): the size of the
+   * torque the joint's last impulse exerts per radian the body turns (times h). λ is the impulse
+   * the joint kept from its last solve (`Joint.lambda`).
+   */
+  private geometric(js: JointSolver, j: number, slot: number): number {
+    const first = js.jFirst[j];
+    const m = js.jBlock[j];
+    const off = js.jB[j] === slot ? js.OFF_JB : js.OFF_JA;
+    const lam = js.joints[j].lambda;
+    const rows = js.rows;
+    let l2 = 0;
+    let a2 = 0;
+    for (let r = 0; r < m; r += 1) {
+      const q = first + r;
+      const l = lam[js.rowKey[q]];
+      l2 += l * l;
+      const base = q * js.RS + off;
+      for (let p = 0; p < this.k; p += 1) a2 += rows[base + p] * rows[base + p];
+    }
+    return Math.sqrt(l2 * a2);
+  }
+
   /** Writes H_ii of every node into its D block. */
   private assemble(js: JointSolver, sb: SolverBodies): void {
     const { n, k, bs } = this;
@@ -294,6 +324,14 @@ export class JointTree {
       const I = sb.inertia;
       const i0 = slot * k * k;
       for (let r = 0; r < k; r += 1) for (let c = 0; c < k; c += 1) mat[d0 + (n + r) * s + n + c] = I[i0 + r * k + c];
+      if (this.stiffness > 0) {
+        // Geometric stiffness (Andrews, Teichmann & Kry 2017): h·Σ|λ||J_angular| on the diagonal.
+        let g = 0;
+        for (let ed = this.adjHead[i]; ed >= 0; ed = this.adjNext[ed]) g += this.geometric(js, this.nRef[this.adjJoint[ed]], slot);
+        for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) g += this.geometric(js, j, slot);
+        g *= this.stiffness;
+        for (let r = 0; r < k; r += 1) mat[d0 + (n + r) * s + n + r] += g;
+      }
       let row = bs;
       for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
         const m2 = js.jBlock[j];

@@ -52,7 +52,18 @@ export interface JointOwner {
   onJointChanged(joint: Joint): void;
 }
 
-import { JS_HERTZ, JS_DAMPING, JS_BREAK_FORCE, JS_BREAK_TORQUE, JS_FORCE, JS_TORQUE, JS_COMMON_COUNT } from './joint-slots.js';
+import {
+  JS_HERTZ,
+  JS_DAMPING,
+  JS_BREAK_FORCE,
+  JS_BREAK_TORQUE,
+  JS_FORCE,
+  JS_TORQUE,
+  JS_COMMON_COUNT,
+  JS_ERROR,
+  JS_STRETCH_COUNT,
+  JS_STRETCH_LIMIT,
+} from './joint-slots.js';
 
 let nextJointId = 1;
 
@@ -199,6 +210,32 @@ export abstract class Joint {
   /** The angular load of the last sub-step: |λ_angular| / h (N·m), limits included, motor excluded. */
   get torque(): number {
     return this.state[JS_TORQUE]!;
+  }
+
+  /**
+   * The largest error the solver left in this joint at the end of the last sub-step it was solved
+   * in, at the final poses after the position projection: the largest of the linear error |C| of
+   * its linear equality rows (m: {@link Joint.error} at that moment), the angular error of its
+   * locked planes (rad) and the violation of a limit or a rope. 0 for a soft joint (its error is
+   * its spring) and before the first step.
+   */
+  get lastError(): number {
+    return this.state[JS_ERROR]!;
+  }
+
+  /**
+   * Whether the joint ended the last sub-step it was solved in stretched: `lastError` past
+   * 10 × `constraintSlop` (1 cm, or 0.01 rad, at the defaults). A rigid joint is never stretched
+   * in a scene the solver can hold; a stretched joint says that this one cannot at these
+   * settings (raise `subSteps` or lower the time step).
+   */
+  get stretched(): boolean {
+    return this.state[JS_ERROR]! > this.state[JS_STRETCH_LIMIT]!;
+  }
+
+  /** How many sub-steps ended with the joint stretched (see {@link Joint.stretched}), since it was built. */
+  get stretchCount(): number {
+    return this.state[JS_STRETCH_COUNT]!;
   }
 
   /** The count of degrees of freedom the joint takes away (rows of equality, plus limits). */

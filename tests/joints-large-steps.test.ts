@@ -127,12 +127,17 @@ describe('a joint past its threshold says so: joint.stretched, joint.stretchCoun
       world.step(1 / 60);
       expect(joint.stretched).toBe(true);
       expect(joint.stretchCount).toBe(1);
+      // The world says so too: the stretched joints of the last sub-step, and the running count.
+      expect(world.stats.stretchedJoints).toBe(1);
+      expect(world.jointErrorCount).toBe(1);
       expect(joint.lastError).toBeCloseTo(1 - 10 / 60, 9);
       expect(joint.lastError).toBeCloseTo(pointJointError(ball, zero, null, far), 12);
       for (let s = 0; s < 60; s += 1) world.step(1 / 60);
       expect(joint.stretched).toBe(false);
       // 1 − s/6 > 0.01 for s = 1..5: five sub-steps ended stretched.
       expect(joint.stretchCount).toBe(5);
+      expect(world.jointErrorCount).toBe(5);
+      expect(world.stats.stretchedJoints).toBe(0);
       expect(joint.lastError).toBeLessThanOrEqual(1e-12);
     });
   }

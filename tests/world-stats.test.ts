@@ -19,6 +19,7 @@ describe('world.stats', () => {
       touching: 0,
       contactPoints: 0,
       solverPasses: 0,
+      stretchedJoints: 0,
     });
     world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0 }));
     const boxes = [0, 1, 2].map((i) =>

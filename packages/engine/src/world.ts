@@ -70,6 +70,11 @@ export interface WorldStats {
    * contacts converged early); 0 when there was nothing to solve.
    */
   readonly solverPasses: number;
+  /**
+   * Joints that ended the last sub-step stretched: their error past 10 × `constraintSlop` (see
+   * `Joint.stretched`). A joint solve that cannot hold its joints shows here, not silently.
+   */
+  readonly stretchedJoints: number;
 }
 
 /** Options of `new World(options)`. */
@@ -369,6 +374,7 @@ export class WorldBase {
       touching: this.touchingCount,
       contactPoints: this.solver.pointCount,
       solverPasses: this.solverPasses,
+      stretchedJoints: this.stretchedJointCount(),
     });
   }
 
@@ -508,6 +514,23 @@ export class WorldBase {
     body.owner = null;
     this.bodyView = null;
     return this;
+  }
+
+  /**
+   * How many times a joint of this world ended a sub-step stretched (its error past
+   * 10 × `constraintSlop`; `Joint.stretched`), summed over the joints now in the world: a counter
+   * to watch (or test) that joints hold. Kept by the joints, so a snapshot keeps it.
+   */
+  get jointErrorCount(): number {
+    let sum = 0;
+    for (const joint of this.jointList) sum += joint.stretchCount;
+    return sum;
+  }
+
+  private stretchedJointCount(): number {
+    let count = 0;
+    for (const joint of this.jointList) if (joint.stretched) count += 1;
+    return count;
   }
 
   /** The joints of the world, in the order they were added (a frozen array, replaced when the list changes). */

@@ -22,7 +22,15 @@ function perpendicular(D: Dims, w: Float64Array, L: Float64Array): number {
 }
 
 /** Spins a box at `speed` rad/s in plane `plane`, with `eps` rad/s in every other plane; returns the peak |ω⊥L|. */
-function peakPerpendicular(n: number, halfExtents: number[], plane: number, speed: number, eps: number, h: number, seconds: number): number {
+function peakPerpendicular(
+  n: number,
+  halfExtents: number[],
+  plane: number,
+  speed: number,
+  eps: number,
+  h: number,
+  seconds: number,
+): number {
   const D = dims(n);
   const world = new World({ dimensions: n });
   const omega = new Float64Array(D.k).fill(eps);
@@ -67,7 +75,13 @@ describe('the 4D Dzhanibekov effect', () => {
     // Near the intermediate plane, so the motion inside the subspace is a full flip.
     const omega3 = [0.01, 5, 0.01]; // (xy, xz, yz)
     const world4 = new World({ dimensions: 4 });
-    const body4 = world4.addBody(new Body(D4, { shape: HyperBox(D4, [1, 0.6, 0.3, 0.45]), mass: 1, angularVelocity: [omega3[0]!, omega3[1]!, 0, omega3[2]!, 0, 0] }));
+    const body4 = world4.addBody(
+      new Body(D4, {
+        shape: HyperBox(D4, [1, 0.6, 0.3, 0.45]),
+        mass: 1,
+        angularVelocity: [omega3[0]!, omega3[1]!, 0, omega3[2]!, 0, 0],
+      }),
+    );
     const world3 = new World({ dimensions: 3 });
     const body3 = world3.addBody(new Body(D3, { shape: HyperBox(D3, [1, 0.6, 0.3]), mass: 1, angularVelocity: omega3 }));
     // 4D rotor components with an e3 factor: e03 (3), e13 (5), e23 (6), e0123 (7).
@@ -82,7 +96,12 @@ describe('the 4D Dzhanibekov effect', () => {
       for (const p of wPlanes) leak = Math.max(leak, Math.abs(body4.w[p]!), Math.abs(body4.L[p]!));
       for (const a of wBlades) leak = Math.max(leak, Math.abs(body4.R[a]!));
       // 3D bivector (xy, xz, yz) = 4D planes (0, 1, 3); 3D rotor [1, e01, e02, e12] = 4D [0, 1, 2, 4].
-      differ = Math.max(differ, Math.abs(body4.w[0]! - body3.w[0]!), Math.abs(body4.w[1]! - body3.w[1]!), Math.abs(body4.w[3]! - body3.w[2]!));
+      differ = Math.max(
+        differ,
+        Math.abs(body4.w[0]! - body3.w[0]!),
+        Math.abs(body4.w[1]! - body3.w[1]!),
+        Math.abs(body4.w[3]! - body3.w[2]!),
+      );
       differ = Math.max(differ, ...[0, 1, 2, 4].map((a, i) => Math.abs(body4.R[a]! - body3.R[i]!)));
       peak = Math.max(peak, perpendicular(D3, body3.w, body3.L));
     }

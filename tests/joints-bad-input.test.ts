@@ -30,7 +30,9 @@ function scene(n: number) {
   la[0] = 0.6;
   const lb = [...zero];
   lb[0] = -0.6;
-  const hinge = world.addConstraint(new HingeJoint(a, b, la, lb, { plane: 0, lowerAngle: -1, upperAngle: 1, motorSpeed: 1, maxMotorTorque: 5 }));
+  const hinge = world.addConstraint(
+    new HingeJoint(a, b, la, lb, { plane: 0, lowerAngle: -1, upperAngle: 1, motorSpeed: 1, maxMotorTorque: 5 }),
+  );
   const top = [...zero];
   top[1] = 2;
   const point = world.addConstraint(new PointJoint(a, null, zero, pa, { hertz: 4, damping: 0.7 }));
@@ -51,8 +53,23 @@ function refuses(n: number, label: string, message: RegExp, bad: (s: Scene) => u
     }
     const before = snapshot(s.world);
     const constraints = [...s.world.constraints];
-    const hingeState = [s.hinge.lowerAngle, s.hinge.upperAngle, s.hinge.motorSpeed, s.hinge.maxMotorTorque, s.hinge.hertz, ...s.hinge.localA, ...s.hinge.localB];
-    const pointState = [s.point.hertz, s.point.damping, s.point.breakForce, s.point.breakTorque, ...s.point.localA, ...s.point.localB];
+    const hingeState = [
+      s.hinge.lowerAngle,
+      s.hinge.upperAngle,
+      s.hinge.motorSpeed,
+      s.hinge.maxMotorTorque,
+      s.hinge.hertz,
+      ...s.hinge.localA,
+      ...s.hinge.localB,
+    ];
+    const pointState = [
+      s.point.hertz,
+      s.point.damping,
+      s.point.breakForce,
+      s.point.breakTorque,
+      ...s.point.localA,
+      ...s.point.localB,
+    ];
     let error: unknown = null;
     try {
       bad(s);
@@ -65,8 +82,23 @@ function refuses(n: number, label: string, message: RegExp, bad: (s: Scene) => u
     expect((error as Error).message, text).toMatch(message);
     expect(snapshot(s.world)).toEqual(before);
     expect([...s.world.constraints]).toEqual(constraints);
-    expect([s.hinge.lowerAngle, s.hinge.upperAngle, s.hinge.motorSpeed, s.hinge.maxMotorTorque, s.hinge.hertz, ...s.hinge.localA, ...s.hinge.localB]).toEqual(hingeState);
-    expect([s.point.hertz, s.point.damping, s.point.breakForce, s.point.breakTorque, ...s.point.localA, ...s.point.localB]).toEqual(pointState);
+    expect([
+      s.hinge.lowerAngle,
+      s.hinge.upperAngle,
+      s.hinge.motorSpeed,
+      s.hinge.maxMotorTorque,
+      s.hinge.hertz,
+      ...s.hinge.localA,
+      ...s.hinge.localB,
+    ]).toEqual(hingeState);
+    expect([
+      s.point.hertz,
+      s.point.damping,
+      s.point.breakForce,
+      s.point.breakTorque,
+      ...s.point.localA,
+      ...s.point.localB,
+    ]).toEqual(pointState);
     expect(s.world.bodies.includes(s.outsider)).toBe(false);
     for (let i = 0; i < 60; i += 1) {
       s.world.step(1 / 60);
@@ -79,17 +111,29 @@ function refuses(n: number, label: string, message: RegExp, bad: (s: Scene) => u
 
 describe('bad joint input: a clear error and nothing changed', () => {
   // Anchors of the wrong length.
-  refuses(3, 'PointJoint with localA of 2 numbers in 3D', /localA/, (s) => s.world.addConstraint(new PointJoint(s.a, s.b, [0, 0], [0, 0, 0])));
-  refuses(3, 'PointJoint to the world with localB of 4 numbers in 3D', /localB/, (s) => s.world.addConstraint(new PointJoint(s.a, null, [0, 0, 0], [0, 0, 0, 0])));
-  refuses(4, 'FixedJoint with localB of 3 numbers in 4D', /localB/, (s) => s.world.addConstraint(new FixedJoint(s.a, s.b, [0, 0, 0, 0], [0, 0, 0])));
+  refuses(3, 'PointJoint with localA of 2 numbers in 3D', /localA/, (s) =>
+    s.world.addConstraint(new PointJoint(s.a, s.b, [0, 0], [0, 0, 0])),
+  );
+  refuses(3, 'PointJoint to the world with localB of 4 numbers in 3D', /localB/, (s) =>
+    s.world.addConstraint(new PointJoint(s.a, null, [0, 0, 0], [0, 0, 0, 0])),
+  );
+  refuses(4, 'FixedJoint with localB of 3 numbers in 4D', /localB/, (s) =>
+    s.world.addConstraint(new FixedJoint(s.a, s.b, [0, 0, 0, 0], [0, 0, 0])),
+  );
   refuses(4, 'setAnchors([0, 0, 0], null) on a live 4D hinge', /localA/, (s) => s.hinge.setAnchors([0, 0, 0], null));
-  refuses(3, 'setAnchors(null, [NaN, 0, 0]) on a live point joint', /localB/, (s) => s.point.setAnchors(null, [Number.NaN, 0, 0]));
+  refuses(3, 'setAnchors(null, [NaN, 0, 0]) on a live point joint', /localB/, (s) =>
+    s.point.setAnchors(null, [Number.NaN, 0, 0]),
+  );
   // The hinge plane.
   refuses(4, 'HingeJoint with the non-simple plane e_xy + e_zw = [1, 0, 0, 0, 0, 1]', /plane/, (s) =>
     s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0, 0], [-0.6, 0, 0, 0], { plane: [1, 0, 0, 0, 0, 1] })),
   );
-  refuses(4, 'HingeJoint with plane index 6 (4D has planes 0..5)', /plane/, (s) => s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0, 0], [-0.6, 0, 0, 0], { plane: 6 })));
-  refuses(3, 'HingeJoint with a plane bivector of 6 numbers in 3D', /plane/, (s) => s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0], [-0.6, 0, 0], { plane: [1, 0, 0, 0, 0, 0] })));
+  refuses(4, 'HingeJoint with plane index 6 (4D has planes 0..5)', /plane/, (s) =>
+    s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0, 0], [-0.6, 0, 0, 0], { plane: 6 })),
+  );
+  refuses(3, 'HingeJoint with a plane bivector of 6 numbers in 3D', /plane/, (s) =>
+    s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0], [-0.6, 0, 0], { plane: [1, 0, 0, 0, 0, 0] })),
+  );
   // Limits.
   refuses(3, 'HingeJoint with lowerAngle 0.5 > upperAngle −0.5', /lower|upper/i, (s) =>
     s.world.addConstraint(new HingeJoint(s.a, s.b, [0.6, 0, 0], [-0.6, 0, 0], { lowerAngle: 0.5, upperAngle: -0.5 })),
@@ -97,7 +141,9 @@ describe('bad joint input: a clear error and nothing changed', () => {
   refuses(4, 'setLimits(1, −1) on a live hinge', /lower|upper/i, (s) => s.hinge.setLimits(1, -1));
   refuses(4, 'setMotor(1, −5) (negative torque) on a live hinge', /maxMotorTorque|torque/i, (s) => s.hinge.setMotor(1, -5));
   // Softness.
-  refuses(3, 'PointJoint with hertz −1', /hertz/, (s) => s.world.addConstraint(new PointJoint(s.a, s.b, [0.6, 0, 0], [-0.6, 0, 0], { hertz: -1 })));
+  refuses(3, 'PointJoint with hertz −1', /hertz/, (s) =>
+    s.world.addConstraint(new PointJoint(s.a, s.b, [0.6, 0, 0], [-0.6, 0, 0], { hertz: -1 })),
+  );
   refuses(3, 'setSoftness(−5, 1) on a live joint', /hertz/, (s) => s.point.setSoftness(-5, 1));
   refuses(3, 'setSoftness(5, −1) on a live joint', /damping/, (s) => s.point.setSoftness(5, -1));
   refuses(3, 'setBreak(−1, 0) on a live joint', /force/i, (s) => s.point.setBreak(-1, 0));
@@ -105,20 +151,36 @@ describe('bad joint input: a clear error and nothing changed', () => {
   refuses(3, "DistanceJoint with mode 'chain'", /mode/, (s) =>
     s.world.addConstraint(new DistanceJoint(s.a, s.b, [0, 0, 0], [0, 0, 0], { rest: 1, mode: 'chain' as unknown as 'rod' })),
   );
-  refuses(3, 'DistanceJoint with rest −1', /rest/, (s) => s.world.addConstraint(new DistanceJoint(s.a, s.b, [0, 0, 0], [0, 0, 0], { rest: -1 })));
+  refuses(3, 'DistanceJoint with rest −1', /rest/, (s) =>
+    s.world.addConstraint(new DistanceJoint(s.a, s.b, [0, 0, 0], [0, 0, 0], { rest: -1 })),
+  );
   // Subspace axes and planes.
-  refuses(4, 'SubspaceJoint with lockAxes [4] in 4D (axes 0..3)', /lockAxes/, (s) => s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [4], worldFrame: true })));
-  refuses(4, 'SubspaceJoint with lockAxes [1.5]', /lockAxes/, (s) => s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [1.5] })));
-  refuses(4, 'SubspaceJoint with lockPlanes [6] in 4D (planes 0..5)', /lockPlanes/, (s) => s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [3], lockPlanes: [6] })));
+  refuses(4, 'SubspaceJoint with lockAxes [4] in 4D (axes 0..3)', /lockAxes/, (s) =>
+    s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [4], worldFrame: true })),
+  );
+  refuses(4, 'SubspaceJoint with lockAxes [1.5]', /lockAxes/, (s) =>
+    s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [1.5] })),
+  );
+  refuses(4, 'SubspaceJoint with lockPlanes [6] in 4D (planes 0..5)', /lockPlanes/, (s) =>
+    s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [3], lockPlanes: [6] })),
+  );
   refuses(4, 'SubspaceJoint with both lockAxes and freeAxes', /lockAxes|freeAxes/, (s) =>
-    s.world.addConstraint(new SubspaceJoint(s.a, null, { lockAxes: [3], freeAxes: [0, 1, 2] } as unknown as { lockAxes: number[] })),
+    s.world.addConstraint(
+      new SubspaceJoint(s.a, null, { lockAxes: [3], freeAxes: [0, 1, 2] } as unknown as { lockAxes: number[] }),
+    ),
   );
   // Unknown options and misuse of the world.
   refuses(3, "PointJoint with an unknown option 'hertzz'", /hertzz/, (s) =>
     s.world.addConstraint(new PointJoint(s.a, s.b, [0, 0, 0], [0, 0, 0], { hertzz: 5 } as unknown as { hertz: number })),
   );
-  refuses(3, 'addConstraint of a joint whose body is not in the world', /outsider|world/, (s) => s.world.addConstraint(new PointJoint(s.a, s.outsider, [0, 0, 0], [0, 0, 0])));
+  refuses(3, 'addConstraint of a joint whose body is not in the world', /outsider|world/, (s) =>
+    s.world.addConstraint(new PointJoint(s.a, s.outsider, [0, 0, 0], [0, 0, 0])),
+  );
   refuses(3, 'addConstraint of a joint already in the world', /already|world/, (s) => s.world.addConstraint(s.hinge));
-  refuses(3, 'removeConstraint of a joint not in the world', /world|constraint/i, (s) => s.world.removeConstraint(new PointJoint(s.a, s.b, [0, 0, 0], [0, 0, 0])));
-  refuses(3, 'addConstraint of something that is not a joint', /joint/i, (s) => (s.world as World).addConstraint({} as unknown as PointJoint));
+  refuses(3, 'removeConstraint of a joint not in the world', /world|constraint/i, (s) =>
+    s.world.removeConstraint(new PointJoint(s.a, s.b, [0, 0, 0], [0, 0, 0])),
+  );
+  refuses(3, 'addConstraint of something that is not a joint', /joint/i, (s) =>
+    (s.world as World).addConstraint({} as unknown as PointJoint),
+  );
 });

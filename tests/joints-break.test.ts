@@ -96,7 +96,7 @@ describe('breaking: breakForce just above the static load holds, just below it b
     expect(Math.abs(joint.force - G) / G, report).toBeLessThan(0.02);
   });
 
-  it('with breakForce 0.98 m g it breaks, fires \'broken\' once, leaves the world, and the ball falls freely', () => {
+  it("with breakForce 0.98 m g it breaks, fires 'broken' once, leaves the world, and the ball falls freely", () => {
     const { world, body, joint } = hangingBall(0.98 * G);
     expectBreaks(world, body, joint, 'breakForce 0.98 mg');
   });

@@ -37,7 +37,7 @@ const CLAIMED: Record<'horizontal' | 'hanging', readonly number[]> = {
 
 const table: string[] = [];
 
-describe('the specification\'s chain of 10 links (1 kg, 1 m apart, first link to the world), worst joint error over 10 s ≤ the specification\'s figure', () => {
+describe("the specification's chain of 10 links (1 kg, 1 m apart, first link to the world), worst joint error over 10 s ≤ the specification's figure", () => {
   for (const start of ['horizontal', 'hanging'] as const) {
     CONFIGS.forEach((config, c) => {
       const claimed = CLAIMED[start][c]!;
@@ -54,12 +54,13 @@ describe('the specification\'s chain of 10 links (1 kg, 1 m apart, first link to
   }
 
   afterAll(() => {
-    if (table.length > 0) console.log(`\nchain of 10, worst joint error over 10 s (ours vs the specification's):\n${table.join('\n')}`);
+    if (table.length > 0)
+      console.log(`\nchain of 10, worst joint error over 10 s (ours vs the specification's):\n${table.join('\n')}`);
   });
 });
 
 describe('a mass ratio of 1000:1 in the chain (last link 1000 kg), dt 1/120, subSteps 8', () => {
-  it('starts horizontal: worst joint error over 10 s < 0.45 (the specification\'s; the goal 0.05 is printed)', () => {
+  it("starts horizontal: worst joint error over 10 s < 0.45 (the specification's; the goal 0.05 is printed)", () => {
     const chain = buildChain({ hanging: false, lastMass: 1000, params: { subSteps: 8 } });
     const { worst, energyRise, energyChange } = runChain(chain, 1200, 1 / 120);
     const line = `1000:1 chain, horizontal, 1/120, subSteps 8: ours ${worst.toExponential(3)}, the specification 0.45, goal 0.05 (${worst < 0.05 ? 'goal met' : 'goal NOT met'}); energy: largest rise ${energyRise.toExponential(2)} J, change ${energyChange.toFixed(1)} J`;

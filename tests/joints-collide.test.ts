@@ -26,7 +26,8 @@ function drop(n: number, collideConnected: boolean | undefined) {
   p2[0] = 0.3;
   p2[2] = 0.3;
   const other = world.addBody(new Body(D, { shape: HyperSphere(D, 0.1), mass: 1, position: p2, name: 'free' }));
-  const opts = collideConnected === undefined ? { rest: 3, mode: 'rope' as const } : { rest: 3, mode: 'rope' as const, collideConnected };
+  const opts =
+    collideConnected === undefined ? { rest: 3, mode: 'rope' as const } : { rest: 3, mode: 'rope' as const, collideConnected };
   const joint = world.addConstraint(new DistanceJoint(ball, box, zero, zero, opts));
   for (let s = 0; s < 180; s += 1) world.step(1 / 60);
   return { ball, other, joint, box };

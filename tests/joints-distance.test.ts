@@ -32,7 +32,11 @@ function swing(n: number, mode: Mode, position: number[], velocity: number[], se
     min = Math.min(min, len);
     max = Math.max(max, len);
   }
-  return { min, max, report: `${n}D ${mode} from [${position.map((p) => p.toFixed(3)).join(', ')}] v [${velocity.map((p) => p.toFixed(3)).join(', ')}]: length in [${min.toFixed(5)}, ${max.toFixed(5)}]` };
+  return {
+    min,
+    max,
+    report: `${n}D ${mode} from [${position.map((p) => p.toFixed(3)).join(', ')}] v [${velocity.map((p) => p.toFixed(3)).join(', ')}]: length in [${min.toFixed(5)}, ${max.toFixed(5)}]`,
+  };
 }
 
 describe('DistanceJoint: rope holds only the upper bound, strut only the lower, rod both (rest 1 m, tolerance 0.01 m)', () => {

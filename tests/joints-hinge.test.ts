@@ -134,13 +134,29 @@ describe('a motor driven into a limit stalls there (within 0.01 rad, < 0.01 rad/
   const cases = [
     { n: 4, plane: 2, speed: 2, limits: [-1, 1] as const, at: 1, what: 'upper limit 1' },
     { n: 4, plane: 2, speed: -2, limits: [-1, 1] as const, at: -1, what: 'lower limit −1' },
-    { n: 4, plane: 5, speed: 2, limits: [-4, 4] as const, at: 4, what: 'upper limit 4 rad (beyond π: the angle is tracked, not wrapped)' },
-    { n: 3, plane: 1, speed: 2, limits: [-0.3, 0.7] as const, at: 0.7, what: 'upper limit 0.7, set with setMotor/setLimits after construction' },
+    {
+      n: 4,
+      plane: 5,
+      speed: 2,
+      limits: [-4, 4] as const,
+      at: 4,
+      what: 'upper limit 4 rad (beyond π: the angle is tracked, not wrapped)',
+    },
+    {
+      n: 3,
+      plane: 1,
+      speed: 2,
+      limits: [-0.3, 0.7] as const,
+      at: 0.7,
+      what: 'upper limit 0.7, set with setMotor/setLimits after construction',
+    },
   ];
   for (const c of cases) {
     it(`${c.n}D, free plane ${c.plane}, motor ${c.speed} rad/s at 50 N·m into the ${c.what}: stalls there`, () => {
       const late = c.what.includes('setMotor');
-      const r = late ? rig(c.n, { plane: c.plane }) : rig(c.n, { plane: c.plane, lowerAngle: c.limits[0], upperAngle: c.limits[1], motorSpeed: c.speed, maxMotorTorque: 50 });
+      const r = late
+        ? rig(c.n, { plane: c.plane })
+        : rig(c.n, { plane: c.plane, lowerAngle: c.limits[0], upperAngle: c.limits[1], motorSpeed: c.speed, maxMotorTorque: 50 });
       if (late) {
         r.hinge.setMotor(c.speed, 50);
         r.hinge.setLimits(c.limits[0], c.limits[1]);

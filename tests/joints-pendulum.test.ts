@@ -76,7 +76,7 @@ function swing(n: number, side: number, bob: 'ball' | 'box', seed: number): Swin
   return { measured, expected, crossings: times.length, report };
 }
 
-describe('identity 23: a pendulum on a point joint, T = 2π√(l/g)(1 + θ₀²/16) (+ the bob\'s inertia)', () => {
+describe("identity 23: a pendulum on a point joint, T = 2π√(l/g)(1 + θ₀²/16) (+ the bob's inertia)", () => {
   it('identity 23, 3D: a small ball (ρ 0.05) on l = 1 m swings with the period of the formula within 1 %', () => {
     const r = swing(3, 0, 'ball', 2301);
     expect(r.crossings, r.report).toBeGreaterThanOrEqual(17);
@@ -94,7 +94,7 @@ describe('identity 23: a pendulum on a point joint, T = 2π√(l/g)(1 + θ₀²/
     expect(Math.abs(r.measured - r.expected) / r.expected, r.report).toBeLessThan(0.01);
   });
 
-  it('identity 23 with the bob\'s own inertia, 3D: a box bob (0.6 × 0.6 in the swing plane, I_cm = 0.06 m l²) within 1 % of the physical-pendulum period, which is 3 % above the point-mass one', () => {
+  it("identity 23 with the bob's own inertia, 3D: a box bob (0.6 × 0.6 in the swing plane, I_cm = 0.06 m l²) within 1 % of the physical-pendulum period, which is 3 % above the point-mass one", () => {
     const r = swing(3, 0, 'box', 2304);
     expect(Math.abs(r.measured - r.expected) / r.expected, r.report).toBeLessThan(0.01);
   });

@@ -21,7 +21,9 @@ const EXPECTED = G / (2 * Math.PI * 5) ** 2; // 9.9396e-3 m
 
 function hang(n: number, dt: number, damping: number, seconds = 5) {
   const world = makeWorld(n);
-  const body = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position: new Array<number>(n).fill(0) }));
+  const body = world.addBody(
+    new Body(world.D, { shape: HyperSphere(world.D, 0.1), mass: 1, position: new Array<number>(n).fill(0) }),
+  );
   const zero = new Array<number>(n).fill(0);
   const joint = world.addConstraint(new PointJoint(body, null, zero, zero, { hertz: 5, damping }));
   const steps = Math.round(seconds / dt);
@@ -39,7 +41,11 @@ function hang(n: number, dt: number, damping: number, seconds = 5) {
 }
 
 describe('identity 24: a soft joint of f Hz holding m hangs g/(2πf)² low (5 Hz, 1 kg: 9.94 mm)', () => {
-  for (const [label, dt] of [['1/60', 1 / 60], ['1/120', 1 / 120], ['1/240', 1 / 240]] as const) {
+  for (const [label, dt] of [
+    ['1/60', 1 / 60],
+    ['1/120', 1 / 120],
+    ['1/240', 1 / 240],
+  ] as const) {
     it(`identity 24, dt ${label}: the rest sag is 9.94 mm within 1 %`, () => {
       const { rest } = hang(3, dt, 1);
       const report = `5 Hz, damping 1, dt ${label}: sag ${(rest * 1e3).toFixed(4)} mm, formula ${(EXPECTED * 1e3).toFixed(4)} mm (${(((rest - EXPECTED) / EXPECTED) * 100).toFixed(3)} %)`;
@@ -55,7 +61,10 @@ describe('identity 24: a soft joint of f Hz holding m hangs g/(2πf)² low (5 Hz
     expect(Math.abs(rest - EXPECTED) / EXPECTED, report).toBeLessThan(0.01);
   });
 
-  for (const [label, dt] of [['1/60', 1 / 60], ['1/240', 1 / 240]] as const) {
+  for (const [label, dt] of [
+    ['1/60', 1 / 60],
+    ['1/240', 1 / 240],
+  ] as const) {
     it(`damping ratio 1 at dt ${label}: no overshoot (deepest ≤ 1.01 × rest sag); damping ratio 0.2 overshoots > 10 %`, () => {
       const critical = hang(3, dt, 1);
       const under = hang(3, dt, 0.2);

@@ -47,10 +47,19 @@ function pinned(o: PinOptions) {
   const w = [uniform(rand, 1, 3), uniform(rand, -3, -1), 0, uniform(rand, 1, 3), 0, 0];
   const velocity = [...randomArray(rand, 3, -1, 1), 0];
   const body = world.addBody(
-    new Body(D, { shape: HyperBox(D, [0.5, 0.3, 0.2, 0.4]), mass: 1, position: [0, 5, 0, 0], velocity, angularVelocity: w, ...(rotor ? { rotor } : {}) }),
+    new Body(D, {
+      shape: HyperBox(D, [0.5, 0.3, 0.2, 0.4]),
+      mass: 1,
+      position: [0, 5, 0, 0],
+      velocity,
+      angularVelocity: w,
+      ...(rotor ? { rotor } : {}),
+    }),
   );
   const R0rev = rotorReverse(D, new Float64Array(D.r), body.R);
-  const joint = o.pin ? world.addConstraint(new SubspaceJoint(body, null, { lockAxes: [3], lockPlanes: [2, 4, 5], worldFrame: true })) : null;
+  const joint = o.pin
+    ? world.addConstraint(new SubspaceJoint(body, null, { lockAxes: [3], lockPlanes: [2, 4, 5], worldFrame: true }))
+    : null;
   let wTarget = 0;
   const worst = { x: 0, omega: 0, turn: 0 };
   const measure = (): void => {
@@ -85,11 +94,16 @@ function pinned(o: PinOptions) {
   };
 }
 
-describe('identity 26: the specification\'s 4D pin keeps w and the planes (x w), (y w), (z w) at 0 (1e-6) while the body tumbles in 3D', () => {
+describe("identity 26: the specification's 4D pin keeps w and the planes (x w), (y w), (z w) at 0 (1e-6) while the body tumbles in 3D", () => {
   const starts = [
     { label: 'axis-aligned box', turned: false, pushes: false, seed: 2601 },
     { label: 'box turned 0.4 rad in (x w) (inertia couples w-planes to 3D planes)', turned: true, pushes: false, seed: 2602 },
-    { label: 'turned box pushed every step by a seeded 1–5 N force with a w component at a seeded arm', turned: true, pushes: true, seed: 2603 },
+    {
+      label: 'turned box pushed every step by a seeded 1–5 N force with a w component at a seeded arm',
+      turned: true,
+      pushes: true,
+      seed: 2603,
+    },
   ];
   for (const s of starts) {
     it(`identity 26, ${s.label}: |x_w|, |ω_xw|, |ω_yw|, |ω_zw| and the w-part of the turn ≤ 1e-6 over 10 s`, () => {
@@ -108,7 +122,9 @@ describe('identity 26: the specification\'s 4D pin keeps w and the planes (x w),
   it('control: without the pin, the turned box gains w-plane ω > 0.01 rad/s (so the pin test can fail)', () => {
     const r = pinned({ turned: true, pushes: false, pin: false, seed: 2602 });
     for (let i = 0; i < 600; i += 1) r.step();
-    console.log(`no pin: worst |ω_w-planes| ${r.worst.omega.toExponential(2)}, w-part of the turn ${r.worst.turn.toExponential(2)}`);
+    console.log(
+      `no pin: worst |ω_w-planes| ${r.worst.omega.toExponential(2)}, w-part of the turn ${r.worst.turn.toExponential(2)}`,
+    );
     expect(r.worst.omega).toBeGreaterThan(0.01);
   });
 });

@@ -111,8 +111,14 @@ function incline(n: 3 | 4, theta: number, mu: number) {
   const normal = n === 3 ? [-s, c, 0] : [0, c, 0, -s];
   const down = n === 3 ? [-c, -s, 0] : [0, -s, 0, -c];
   addGround(world, { friction: mu, restitution: 0 }, normal, 0);
-  const box: Body = addBox(world, normal.map((x) => 0.5 * x), 0.5, { material: { friction: mu, restitution: 0 } });
-  if (n === 3) box.rotateInPlane(0, 1, theta); // e_y → (−sin θ, cos θ, 0)
+  const box: Body = addBox(
+    world,
+    normal.map((x) => 0.5 * x),
+    0.5,
+    { material: { friction: mu, restitution: 0 } },
+  );
+  if (n === 3)
+    box.rotateInPlane(0, 1, theta); // e_y → (−sin θ, cos θ, 0)
   else box.rotateInPlane(1, 3, -theta); // e_y → (0, cos θ, 0, −sin θ)
   return { world, box, normal, down };
 }

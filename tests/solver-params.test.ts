@@ -13,7 +13,9 @@ function stack9(params: Partial<Params>): { world: World; top: Body } {
   world.addBody(new Body(D, { shape: HalfSpace(D, [0, 1, 0], 0), mass: 0, material: { friction: 0.5 } }));
   let top: Body | null = null;
   for (let i = 0; i < 9; i += 1) {
-    top = world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.5, 0.5]), mass: 1, position: [0, 0.5 + i, 0], material: { friction: 0.5 } }));
+    top = world.addBody(
+      new Body(D, { shape: HyperBox(D, [0.5, 0.5, 0.5]), mass: 1, position: [0, 0.5 + i, 0], material: { friction: 0.5 } }),
+    );
   }
   return { world, top: top! };
 }

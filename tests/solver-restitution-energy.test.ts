@@ -34,7 +34,8 @@ function bounces(n: number, kind: 'ball' | 'box', e: number, drop: number, secon
   addGround(world, { restitution: 0 });
   const r = 0.25;
   const options = { material: { restitution: e } };
-  const body = kind === 'ball' ? addBall(world, axis(n, 1, drop + r), r, options) : addBox(world, axis(n, 1, drop + r), r, options);
+  const body =
+    kind === 'ball' ? addBall(world, axis(n, 1, drop + r), r, options) : addBox(world, axis(n, 1, drop + r), r, options);
   const apexes: number[] = [];
   let rising = false;
   let top = 0;
@@ -88,7 +89,10 @@ describe('restitution e < 1: each apex is e² times the last, and none rises', (
           worst = Math.max(worst, Math.abs(apexes[k]! - want));
           compared += 1;
         }
-        const report = `${compared} bounces compared, worst ${(worst * 1000).toFixed(3)} mm; apexes ${apexes.slice(0, 6).map((a) => a.toFixed(4)).join(' ')}`;
+        const report = `${compared} bounces compared, worst ${(worst * 1000).toFixed(3)} mm; apexes ${apexes
+          .slice(0, 6)
+          .map((a) => a.toFixed(4))
+          .join(' ')}`;
         verbose(`restitution ${e} n=${n}: ${report}`);
         expect(compared, report).toBeGreaterThanOrEqual(e === 0.3 ? 2 : 4);
         expect(worst, report).toBeLessThan(5e-4);
@@ -149,7 +153,9 @@ describe('a heap with restitution ≤ 1 never gains energy', () => {
         run(world, 600, DT, () => {
           worst = Math.max(worst, energy() - e0);
         });
-        verbose(`heap n=${n} seed=${seed}: start ${e0.toFixed(3)} J, largest rise ${worst.toExponential(3)} J, end ${(energy() - e0).toFixed(3)} J`);
+        verbose(
+          `heap n=${n} seed=${seed}: start ${e0.toFixed(3)} J, largest rise ${worst.toExponential(3)} J, end ${(energy() - e0).toFixed(3)} J`,
+        );
         expect(worst, `seed ${seed}`).toBeLessThanOrEqual(1e-12 * e0);
       }
     });

@@ -38,7 +38,14 @@ function at(n: number, values: Record<number, number>): number[] {
 function groundWorld(n: number, params: Record<string, unknown> = {}): World {
   const D = dims(n);
   const world = new World({ dimensions: n, gravity: gravity(n), params: { allowSleep: false, ...params } });
-  world.addBody(new Body(D, { shape: HalfSpace(D, at(n, { 1: 1 }), 0), mass: 0, material: { friction: 0.6, restitution: 0 }, name: 'ground' }));
+  world.addBody(
+    new Body(D, {
+      shape: HalfSpace(D, at(n, { 1: 1 }), 0),
+      mass: 0,
+      material: { friction: 0.6, restitution: 0 },
+      name: 'ground',
+    }),
+  );
   return world;
 }
 
@@ -84,8 +91,6 @@ function crossPolytope(n: number, s: number, Q?: Float64Array): { vertices: numb
   return { vertices, facets };
 }
 
-
-
 /**
  * A rotation (det +1) that takes the unit vector u to −e_1 (down): the Householder reflection
  * u → −e_1 followed by the reflection x_0 → −x_0 (which fixes e_1).
@@ -114,7 +119,12 @@ describe('torus on the ground (test plan 9)', () => {
       const D = dims(n);
       const world = groundWorld(n);
       const torus = world.addBody(
-        new Body(D, { shape: HyperTorus(D, R, r, [0, 2]), mass: 1, position: at(n, { 1: r + 0.1 }), material: { friction: 0.6, restitution: 0 } }),
+        new Body(D, {
+          shape: HyperTorus(D, R, r, [0, 2]),
+          mass: 1,
+          position: at(n, { 1: r + 0.1 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
       );
       let lowest = Infinity;
       run(world, 3, () => (lowest = Math.min(lowest, torus.x[1]!)));
@@ -130,7 +140,12 @@ describe('torus on the ground (test plan 9)', () => {
       const D = dims(n);
       const world = groundWorld(n);
       const torus = world.addBody(
-        new Body(D, { shape: HyperTorus(D, R, r, [0, 1]), mass: 1, position: at(n, { 1: R + r + 0.05 }), material: { friction: 0.6, restitution: 0 } }),
+        new Body(D, {
+          shape: HyperTorus(D, R, r, [0, 1]),
+          mass: 1,
+          position: at(n, { 1: R + r + 0.05 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
       );
       run(world, 0.5);
       let worst = 0;
@@ -146,7 +161,12 @@ describe('torus on the ground (test plan 9)', () => {
       const D = dims(n);
       const world = groundWorld(n);
       const torus = world.addBody(
-        new Body(D, { shape: HyperTorus(D, R, r, [0, 1]), mass: 1, position: at(n, { 1: R + r }), material: { friction: 0.6, restitution: 0 } }),
+        new Body(D, {
+          shape: HyperTorus(D, R, r, [0, 1]),
+          mass: 1,
+          position: at(n, { 1: R + r }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
       );
       const energy = (): number => torus.kineticEnergy() + G * torus.x[1]!;
       const e0 = energy();
@@ -158,7 +178,12 @@ describe('torus on the ground (test plan 9)', () => {
     it(`n = ${n}: tipped 0.2 rad off its rim it falls over and ends lying flat, centre at r (penetrationSlop + 1e-3)`, () => {
       const D = dims(n);
       const world = groundWorld(n, { angularDamping: 0 });
-      const body = new Body(D, { shape: HyperTorus(D, R, r, [0, 1]), mass: 1, position: at(n, { 1: R + r + 0.01 }), material: { friction: 0.6, restitution: 0 } });
+      const body = new Body(D, {
+        shape: HyperTorus(D, R, r, [0, 1]),
+        mass: 1,
+        position: at(n, { 1: R + r + 0.01 }),
+        material: { friction: 0.6, restitution: 0 },
+      });
       body.rotateInPlane(1, 2, 0.2); // tips the core plane toward z
       const torus = world.addBody(body);
       run(world, 10);
@@ -198,9 +223,21 @@ describe('torus on the ground (test plan 9)', () => {
       const world = new World({ dimensions: n, gravity: gravity(n), params: { allowSleep: false } });
       const H0 = 2;
       const rho = 0.2;
-      world.addBody(new Body(D, { shape: HyperTorus(D, R, r, [0, 2]), mass: 0, position: at(n, { 1: H0 }), material: { friction: 0.6, restitution: 0 } }));
+      world.addBody(
+        new Body(D, {
+          shape: HyperTorus(D, R, r, [0, 2]),
+          mass: 0,
+          position: at(n, { 1: H0 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
+      );
       const ball = world.addBody(
-        new Body(D, { shape: HyperSphere(D, rho), mass: 1, position: at(n, { 0: R, 1: H0 + r + rho + 0.5 }), material: { friction: 0.6, restitution: 0 } }),
+        new Body(D, {
+          shape: HyperSphere(D, rho),
+          mass: 1,
+          position: at(n, { 0: R, 1: H0 + r + rho + 0.5 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
       );
       run(world, 3);
       expect(Math.abs(ball.x[1]! - (H0 + r + rho))).toBeLessThanOrEqual(SLOP + 1e-3);
@@ -220,7 +257,14 @@ describe('convex mesh on the ground and against a ball (test plan 10)', () => {
       const cp = crossPolytope(n, s, Q);
       const shape = ConvexMesh(D, cp.vertices, cp.facets);
       const world = groundWorld(n);
-      const body = world.addBody(new Body(D, { shape, mass: 1, position: at(n, { 1: s / Math.sqrt(n) + 0.05 }), material: { friction: 0.6, restitution: 0 } }));
+      const body = world.addBody(
+        new Body(D, {
+          shape,
+          mass: 1,
+          position: at(n, { 1: s / Math.sqrt(n) + 0.05 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
+      );
       run(world, 3);
       expect(Math.abs(body.x[1]! - s / Math.sqrt(n))).toBeLessThanOrEqual(SLOP + 1e-3);
       // the n vertices of the facet are all at the lowest height (within 1e-6 of each other)
@@ -243,7 +287,14 @@ describe('convex mesh on the ground and against a ball (test plan 10)', () => {
       const s = 0.5;
       const cp = crossPolytope(n, s);
       const world = groundWorld(n);
-      const body = world.addBody(new Body(D, { shape: ConvexMesh(D, cp.vertices, cp.facets), mass: 1, position: at(n, { 1: s + 0.05 }), material: { friction: 0.6, restitution: 0 } }));
+      const body = world.addBody(
+        new Body(D, {
+          shape: ConvexMesh(D, cp.vertices, cp.facets),
+          mass: 1,
+          position: at(n, { 1: s + 0.05 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
+      );
       let worst = 0;
       run(world, 1);
       run(world, 2, () => (worst = Math.max(worst, Math.abs(body.x[1]! - s))));
@@ -255,7 +306,12 @@ describe('convex mesh on the ground and against a ball (test plan 10)', () => {
       const s = 0.5;
       const cp = crossPolytope(n, s);
       const world = groundWorld(n);
-      const b = new Body(D, { shape: ConvexMesh(D, cp.vertices, cp.facets), mass: 1, position: at(n, { 1: s + 0.01 }), material: { friction: 0.6, restitution: 0 } });
+      const b = new Body(D, {
+        shape: ConvexMesh(D, cp.vertices, cp.facets),
+        mass: 1,
+        position: at(n, { 1: s + 0.01 }),
+        material: { friction: 0.6, restitution: 0 },
+      });
       b.rotateInPlane(0, 1, 0.3);
       b.rotateInPlane(1, 2, 0.2);
       if (n > 3) b.rotateInPlane(1, 3, 0.1);
@@ -271,8 +327,17 @@ describe('convex mesh on the ground and against a ball (test plan 10)', () => {
       const mesh = cubeBoundary(a.length, a);
       const shape = ConvexMesh(D, mesh.vertices, mesh.facets);
       const world = groundWorld(n);
-      const asMesh = world.addBody(new Body(D, { shape, mass: 1, position: at(n, { 1: 0.4 }), material: { friction: 0.6, restitution: 0 } }));
-      const asBox = world.addBody(new Body(D, { shape: HyperBox(D, a), mass: 1, position: at(n, { 0: 3, 1: 0.4 }), material: { friction: 0.6, restitution: 0 } }));
+      const asMesh = world.addBody(
+        new Body(D, { shape, mass: 1, position: at(n, { 1: 0.4 }), material: { friction: 0.6, restitution: 0 } }),
+      );
+      const asBox = world.addBody(
+        new Body(D, {
+          shape: HyperBox(D, a),
+          mass: 1,
+          position: at(n, { 0: 3, 1: 0.4 }),
+          material: { friction: 0.6, restitution: 0 },
+        }),
+      );
       run(world, 3);
       expect(Math.abs(asMesh.x[1]! - a[1]!)).toBeLessThanOrEqual(SLOP + 1e-3);
       expect(Math.abs(asBox.x[1]! - a[1]!)).toBeLessThanOrEqual(SLOP + 1e-3);
@@ -380,7 +445,9 @@ describe('determinism', () => {
           const v = y[field];
           expect(u.length).toBe(v.length);
           // exact: compare the bit patterns (so −0 vs 0 and NaN payloads count too)
-          expect(new Uint8Array(u.buffer, u.byteOffset, u.byteLength)).toEqual(new Uint8Array(v.buffer, v.byteOffset, v.byteLength));
+          expect(new Uint8Array(u.buffer, u.byteOffset, u.byteLength)).toEqual(
+            new Uint8Array(v.buffer, v.byteOffset, v.byteLength),
+          );
         }
       }
       expect(a.contactCount).toBe(b.contactCount);

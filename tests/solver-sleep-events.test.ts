@@ -25,7 +25,14 @@ function at(n: number, values: Record<number, number>): number[] {
 function makeWorld(n: number, params: Record<string, unknown> = {}): { world: World; ground: Body } {
   const D = dims(n);
   const world = new World({ dimensions: n, gravity: at(n, { 1: -G }), params });
-  const ground = world.addBody(new Body(D, { shape: HalfSpace(D, at(n, { 1: 1 }), 0), mass: 0, material: { friction: 0.6, restitution: 0 }, name: 'ground' }));
+  const ground = world.addBody(
+    new Body(D, {
+      shape: HalfSpace(D, at(n, { 1: 1 }), 0),
+      mass: 0,
+      material: { friction: 0.6, restitution: 0 },
+      name: 'ground',
+    }),
+  );
   return { world, ground };
 }
 
@@ -191,7 +198,15 @@ describe('sleep', () => {
       expect(pile.every((b) => b.isSleeping)).toBe(true);
       const D = world.D;
       const dropY = 3;
-      const box = world.addBody(new Body(D, { shape: HyperBox(D, new Array(n).fill(0.25)), mass: 1, position: at(n, { 1: dropY }), material: { friction: 0.6, restitution: 0 }, name: 'dropped' }));
+      const box = world.addBody(
+        new Body(D, {
+          shape: HyperBox(D, new Array(n).fill(0.25)),
+          mass: 1,
+          position: at(n, { 1: dropY }),
+          material: { friction: 0.6, restitution: 0 },
+          name: 'dropped',
+        }),
+      );
       // top of the pile at 1.0; the box's bottom reaches it after falling dropY − 0.25 − 1.0
       let wokeAt = -1;
       let touchedAt = -1;
@@ -232,7 +247,15 @@ describe('collision events', () => {
       const rho = 0.3;
       const x0 = at(n, { 0: 0.4, 1: 1.5 });
       if (n > 2) x0[2] = -0.2;
-      const ball = world.addBody(new Body(D, { shape: HyperSphere(D, rho), mass: 2, position: x0, material: { friction: 0.5, restitution: 0.8 }, name: 'ball' }));
+      const ball = world.addBody(
+        new Body(D, {
+          shape: HyperSphere(D, rho),
+          mass: 2,
+          position: x0,
+          material: { friction: 0.5, restitution: 0.8 },
+          name: 'ball',
+        }),
+      );
       const begins: { step: number; A: Body; B: Body; point: number[]; normal: number[]; impulse: number }[] = [];
       const ends: { step: number; A: Body; B: Body }[] = [];
       for (let i = 0; i < 120; i += 1) {
@@ -281,15 +304,39 @@ describe('collision events', () => {
     const n = 3;
     const { world, ground } = makeWorld(n, { allowSleep: false });
     const D = world.D;
-    const ball = world.addBody(new Body(D, { shape: HyperSphere(D, 0.3), mass: 1, position: [0.1, 1.2, 0.2], material: { friction: 0.5, restitution: 0.9 }, name: 'ball' }));
-    const box = world.addBody(new Body(D, { shape: HyperBox(D, [0.5, 0.25, 0.5]), mass: 1, position: [5, 0.26, 0], material: { friction: 0.5, restitution: 0 }, name: 'box' }));
+    const ball = world.addBody(
+      new Body(D, {
+        shape: HyperSphere(D, 0.3),
+        mass: 1,
+        position: [0.1, 1.2, 0.2],
+        material: { friction: 0.5, restitution: 0.9 },
+        name: 'ball',
+      }),
+    );
+    const box = world.addBody(
+      new Body(D, {
+        shape: HyperBox(D, [0.5, 0.25, 0.5]),
+        mass: 1,
+        position: [5, 0.26, 0],
+        material: { friction: 0.5, restitution: 0 },
+        name: 'box',
+      }),
+    );
     const seenBall: Seen[] = [];
     const seenGround: Seen[] = [];
     let step = 0;
     const copy =
       (into: Seen[]) =>
       (e: CollisionEvent): void => {
-        into.push({ type: e.type, body: e.body, other: e.other, point: Array.from(e.point), normal: Array.from(e.normal), impulse: e.impulse, step });
+        into.push({
+          type: e.type,
+          body: e.body,
+          other: e.other,
+          point: Array.from(e.point),
+          normal: Array.from(e.normal),
+          impulse: e.impulse,
+          step,
+        });
       };
     const onBall = copy(seenBall);
     const onGround = copy(seenGround);
@@ -356,11 +403,37 @@ describe('collision events', () => {
     const n = 4;
     const D = dims(n);
     const world = new World({ dimensions: n, params: { allowSleep: false } });
-    const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [-1, 0, 0, 0], velocity: [2, 0, 0, 0], material: { restitution: 1 }, name: 'a' }));
-    const b = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [1, 0, 0, 0], velocity: [-2, 0, 0, 0], material: { restitution: 1 }, name: 'b' }));
+    const a = world.addBody(
+      new Body(D, {
+        shape: HyperSphere(D, 0.5),
+        mass: 1,
+        position: [-1, 0, 0, 0],
+        velocity: [2, 0, 0, 0],
+        material: { restitution: 1 },
+        name: 'a',
+      }),
+    );
+    const b = world.addBody(
+      new Body(D, {
+        shape: HyperSphere(D, 0.5),
+        mass: 1,
+        position: [1, 0, 0, 0],
+        velocity: [-2, 0, 0, 0],
+        material: { restitution: 1 },
+        name: 'b',
+      }),
+    );
     const got: Seen[] = [];
     const listener = (e: CollisionEvent): void => {
-      got.push({ type: e.type, body: e.body, other: e.other, point: Array.from(e.point), normal: Array.from(e.normal), impulse: e.impulse, step: 0 });
+      got.push({
+        type: e.type,
+        body: e.body,
+        other: e.other,
+        point: Array.from(e.point),
+        normal: Array.from(e.normal),
+        impulse: e.impulse,
+        step: 0,
+      });
     };
     a.addEventListener('collision', listener);
     b.addEventListener('collision', listener);
@@ -387,14 +460,31 @@ describe('collision events', () => {
     const speeds: number[] = [];
     for (const start of [1.0, 1.01, 1.03, 1.05, 1.065]) {
       const world = new World({ dimensions: n, params: { allowSleep: false } });
-      const a = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [-start, 0, 0], velocity: [2, 0, 0], material: { restitution: 1 } }));
-      const b = world.addBody(new Body(D, { shape: HyperSphere(D, 0.5), mass: 1, position: [start, 0, 0], velocity: [-2, 0, 0], material: { restitution: 1 } }));
+      const a = world.addBody(
+        new Body(D, {
+          shape: HyperSphere(D, 0.5),
+          mass: 1,
+          position: [-start, 0, 0],
+          velocity: [2, 0, 0],
+          material: { restitution: 1 },
+        }),
+      );
+      const b = world.addBody(
+        new Body(D, {
+          shape: HyperSphere(D, 0.5),
+          mass: 1,
+          position: [start, 0, 0],
+          velocity: [-2, 0, 0],
+          material: { restitution: 1 },
+        }),
+      );
       run(world, 1);
       // momentum is conserved in every case
       expect(Math.abs(a.v[0]! + b.v[0]!)).toBeLessThanOrEqual(1e-9);
       speeds.push(b.v[0]!);
     }
-    for (const v of speeds) expect(Math.abs(v - 2), `exit speeds ${speeds.map((x) => x.toFixed(4)).join(', ')}`).toBeLessThanOrEqual(1e-6);
+    for (const v of speeds)
+      expect(Math.abs(v - 2), `exit speeds ${speeds.map((x) => x.toFixed(4)).join(', ')}`).toBeLessThanOrEqual(1e-6);
   });
 
   it('restitution 0.8: a ball dropped on the ground leaves it at e·|v_in| and rises to e²·drop (±10%), whatever the phase of the step at impact (drops 1.2, 1.22, 1.25, 1.3 m)', () => {
@@ -403,7 +493,14 @@ describe('collision events', () => {
     for (const drop of [1.2, 1.22, 1.25, 1.3]) {
       const { world } = makeWorld(3, { allowSleep: false });
       const rho = 0.3;
-      const ball = world.addBody(new Body(world.D, { shape: HyperSphere(world.D, rho), mass: 2, position: [0, drop + rho, 0], material: { friction: 0.5, restitution: 0.8 } }));
+      const ball = world.addBody(
+        new Body(world.D, {
+          shape: HyperSphere(world.D, rho),
+          mass: 2,
+          position: [0, drop + rho, 0],
+          material: { friction: 0.5, restitution: 0.8 },
+        }),
+      );
       let up = false;
       let top = -Infinity;
       for (let i = 0; i < 90; i += 1) {
@@ -416,7 +513,8 @@ describe('collision events', () => {
       ratios.push((top - rho) / (0.64 * drop));
     }
     // (the ratios are reported in the message when this fails)
-    for (const ratio of ratios) expect(ratio, `rise / (e² drop) = ${ratios.map((x) => x.toFixed(3)).join(', ')}`).toBeGreaterThanOrEqual(0.9);
+    for (const ratio of ratios)
+      expect(ratio, `rise / (e² drop) = ${ratios.map((x) => x.toFixed(3)).join(', ')}`).toBeGreaterThanOrEqual(0.9);
     for (const ratio of ratios) expect(ratio).toBeLessThanOrEqual(1.1);
     expect(rises.length).toBe(4);
   });

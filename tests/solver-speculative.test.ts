@@ -51,7 +51,9 @@ describe('no ghost collision: a ball flying past a wall’s edge keeps its veloc
         const { v, begins, passed } = flyBy(n, speed, clearance);
         const want = axis(n, 0, speed);
         const error = Math.max(...v.map((x, d) => Math.abs(x - want[d]!)));
-        verbose(`fly-by n=${n} ${speed} m/s ${clearance} m: v ${v.join(', ')}, error ${error.toExponential(2)}, begins ${begins}`);
+        verbose(
+          `fly-by n=${n} ${speed} m/s ${clearance} m: v ${v.join(', ')}, error ${error.toExponential(2)}, begins ${begins}`,
+        );
         expect(passed).toBe(true);
         expect(error).toBeLessThan(1e-12);
         expect(begins).toBe(0);
@@ -70,7 +72,9 @@ describe('no tunnelling: a 0.1 m ball at 200 m/s never passes a 0.1 m wall', () 
         const D = world.D;
         const half = new Array<number>(n).fill(1);
         half[0] = 0.05;
-        const wall = world.addBody(new Body(D, { shape: HyperBox(D, half), mass: free ? 1 : 0, position: axis(n, 0, 0), name: 'wall' }));
+        const wall = world.addBody(
+          new Body(D, { shape: HyperBox(D, half), mass: free ? 1 : 0, position: axis(n, 0, 0), name: 'wall' }),
+        );
         const ball = addBall(world, axis(n, 0, -3), 0.05, { velocity: axis(n, 0, 200) });
         let worst = -Infinity;
         run(world, 120, 1 / 60, () => {

@@ -72,7 +72,8 @@ describe('test plan 8: collision in 4D', () => {
         // After the 0.3 m drop (0.25 s) has landed: the centre is r above the box's top face.
         if (s > 30) heightErr = Math.max(heightErr, Math.abs(ball.x[1]! - (box.x[1]! + he[1]! + r)));
       });
-      if (process.env.PHYSIN_VERBOSE) console.log(`ball on ${what}: height error ${heightErr.toExponential(2)}, drift ${drift.toExponential(2)}`);
+      if (process.env.PHYSIN_VERBOSE)
+        console.log(`ball on ${what}: height error ${heightErr.toExponential(2)}, drift ${drift.toExponential(2)}`);
       expect(heightErr).toBeLessThan(HEIGHT_TOL);
       expect(drift).toBeLessThan(1e-3);
       if (dynamic) expect(Math.abs(box.x[1]! - 0.5)).toBeLessThan(HEIGHT_TOL);

@@ -20,7 +20,10 @@ function scene(n: number, writtenOut: boolean): { world: World; bodies: Body[] }
     const p = axis(n, 1, 0.6 + 1.1 * i);
     for (let d = 0; d < n; d += 1) if (d !== 1) p[d] = (rand() - 0.5) * 0.2;
     const velocity = Array.from({ length: n }, () => (rand() - 0.5) * 0.5);
-    const b = i % 3 === 2 ? addBall(world, p, 0.4, { velocity }) : addBox(world, p, 0.5, { velocity, material: { friction: 0.3 + 0.1 * (i % 4) } });
+    const b =
+      i % 3 === 2
+        ? addBall(world, p, 0.4, { velocity })
+        : addBox(world, p, 0.5, { velocity, material: { friction: 0.3 + 0.1 * (i % 4) } });
     b.setAngularVelocity(Array.from({ length: world.D.k }, () => (rand() - 0.5) * 2));
     bodies.push(b);
   }

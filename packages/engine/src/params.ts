@@ -246,9 +246,7 @@ export function validateParams(partial: unknown, where = 'validateParams'): asse
   }
   for (const name of Object.keys(partial)) {
     if (!Object.prototype.hasOwnProperty.call(rules, name)) {
-      throw new RangeError(
-        `${where}: unknown parameter '${name}' (known: ${paramNames.join(', ')})`,
-      );
+      throw new RangeError(`${where}: unknown parameter '${name}' (known: ${paramNames.join(', ')})`);
     }
     checkOne(where, name as keyof Params, (partial as Record<string, unknown>)[name]);
   }

@@ -515,7 +515,12 @@ export class ContactSet {
       // A speculative manifold whose gap the velocities would close only along its normal (the
       // row's linear view) but that the bodies never reach in this sub-step is a ghost: it would
       // push a body flying past an edge. Swept, it is dropped (docs/solver.md, Speculative contacts).
-      if (m.count > 0 && A.shape.kind !== 'halfspace' && B.shape.kind !== 'halfspace' && !this.meetsInSubStep(m, A, B, reach, scratch)) {
+      if (
+        m.count > 0 &&
+        A.shape.kind !== 'halfspace' &&
+        B.shape.kind !== 'halfspace' &&
+        !this.meetsInSubStep(m, A, B, reach, scratch)
+      ) {
         m.count = 0;
         if (reusable) this.cache.forget(slot);
       }

@@ -30,7 +30,8 @@ const MODES: readonly DistanceMode[] = ['rod', 'rope', 'strut'];
 const JS_REST = JS_COMMON_COUNT;
 
 function readMode(fn: string, name: string, mode: unknown): number {
-  if (typeof mode !== 'string') throw new TypeError(`${fn}: argument '${name}' must be a string ('rod', 'rope' or 'strut'), got ${typeof mode}`);
+  if (typeof mode !== 'string')
+    throw new TypeError(`${fn}: argument '${name}' must be a string ('rod', 'rope' or 'strut'), got ${typeof mode}`);
   const m = MODES.indexOf(mode as DistanceMode);
   if (m < 0) throw new RangeError(`${fn}: argument '${name}' must be 'rod', 'rope' or 'strut', got '${mode}'`);
   return m;

@@ -12,7 +12,18 @@ import { Joint } from './joint.js';
 import { JS_COMMON_COUNT, JS_H } from './joint-slots.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
-import { KIND_ANGULAR, KIND_MOTOR, ROW_EQUAL, ROW_INEQUAL, ROW_MOTOR, SC_C, SC_H, SC_HI, SC_LO, SC_TARGET } from './joint-solver.js';
+import {
+  KIND_ANGULAR,
+  KIND_MOTOR,
+  ROW_EQUAL,
+  ROW_INEQUAL,
+  ROW_MOTOR,
+  SC_C,
+  SC_H,
+  SC_HI,
+  SC_LO,
+  SC_TARGET,
+} from './joint-solver.js';
 import { readFinite, readLimit, readNonNegative } from './options.js';
 import { registerJointClass } from '../snapshot/registry.js';
 
@@ -73,7 +84,9 @@ export class HingeJoint extends Joint {
       F[0] = 1;
     } else if (typeof o.plane === 'number') {
       if (!Number.isInteger(o.plane) || o.plane < 0 || o.plane >= D.k) {
-        throw new RangeError(`${fn}: argument 'opts.plane' must be a plane index, an integer in [0, ${D.k - 1}], or a simple bivector of ${D.k} numbers, got ${o.plane}`);
+        throw new RangeError(
+          `${fn}: argument 'opts.plane' must be a plane index, an integer in [0, ${D.k - 1}], or a simple bivector of ${D.k} numbers, got ${o.plane}`,
+        );
       }
       F[o.plane] = 1;
     } else {
@@ -84,19 +97,23 @@ export class HingeJoint extends Joint {
       let norm2 = 0;
       for (let p = 0; p < D.k; p += 1) {
         const v = B[p];
-        if (typeof v !== 'number' || !Number.isFinite(v)) throw new RangeError(`${fn}: argument 'opts.plane[${p}]' must be a finite number, got ${v}`);
+        if (typeof v !== 'number' || !Number.isFinite(v))
+          throw new RangeError(`${fn}: argument 'opts.plane[${p}]' must be a finite number, got ${v}`);
         norm2 += v * v;
       }
       if (!(norm2 > 0)) throw new RangeError(`${fn}: argument 'opts.plane' must not be the zero bivector`);
       if (!isSimple(D, B, SIMPLE_TOLERANCE)) {
-        throw new RangeError(`${fn}: argument 'opts.plane' must be a simple bivector (one plane, B ∧ B = 0): a hinge turns in one plane; e.g. e_xy + e_zw turns in two planes at once and is refused`);
+        throw new RangeError(
+          `${fn}: argument 'opts.plane' must be a simple bivector (one plane, B ∧ B = 0): a hinge turns in one plane; e.g. e_xy + e_zw turns in two planes at once and is refused`,
+        );
       }
       const inv = 1 / Math.sqrt(norm2);
       for (let p = 0; p < D.k; p += 1) F[p] = B[p]! * inv;
     }
     const lower = o.lowerAngle === undefined ? -Infinity : readLimit(fn, 'opts.lowerAngle', o.lowerAngle);
     const upper = o.upperAngle === undefined ? Infinity : readLimit(fn, 'opts.upperAngle', o.upperAngle);
-    if (lower > upper) throw new RangeError(`${fn}: argument 'opts.lowerAngle' (${lower}) must be <= 'opts.upperAngle' (${upper})`);
+    if (lower > upper)
+      throw new RangeError(`${fn}: argument 'opts.lowerAngle' (${lower}) must be <= 'opts.upperAngle' (${upper})`);
     const speed = o.motorSpeed === undefined ? 0 : readFinite(fn, 'opts.motorSpeed', o.motorSpeed);
     const maxTorque = o.maxMotorTorque === undefined ? 0 : readNonNegative(fn, 'opts.maxMotorTorque', o.maxMotorTorque);
     this.planeValue = F;

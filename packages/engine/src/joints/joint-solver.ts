@@ -52,7 +52,16 @@ import {
   JS_STRETCH_LIMIT,
   JS_TORQUE,
 } from './joint-slots.js';
-import { SOFT_BIAS_RATE, SOFT_COUNT, SOFT_DAMPING, SOFT_H, SOFT_HERTZ, SOFT_IMPULSE_SCALE, SOFT_MASS_SCALE, softStep } from './soft.js';
+import {
+  SOFT_BIAS_RATE,
+  SOFT_COUNT,
+  SOFT_DAMPING,
+  SOFT_H,
+  SOFT_HERTZ,
+  SOFT_IMPULSE_SCALE,
+  SOFT_MASS_SCALE,
+  softStep,
+} from './soft.js';
 
 /** Row kind: linear (counts toward breakForce). */
 export const KIND_LINEAR = 0;

@@ -327,7 +327,8 @@ export class JointTree {
       if (this.stiffness > 0) {
         // Geometric stiffness (Andrews, Teichmann & Kry 2017): h·Σ|λ||J_angular| on the diagonal.
         let g = 0;
-        for (let ed = this.adjHead[i]; ed >= 0; ed = this.adjNext[ed]) g += this.geometric(js, this.nRef[this.adjJoint[ed]], slot);
+        for (let ed = this.adjHead[i]; ed >= 0; ed = this.adjNext[ed])
+          g += this.geometric(js, this.nRef[this.adjJoint[ed]], slot);
         for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) g += this.geometric(js, j, slot);
         g *= this.stiffness;
         for (let r = 0; r < k; r += 1) mat[d0 + (n + r) * s + n + r] += g;
@@ -374,7 +375,8 @@ export class JointTree {
       this.hblk = growFloat64(this.hblk, s * sp, 0);
       const H = this.hblk;
       for (let r = 0; r < s; r += 1) {
-        for (let c = 0; c < sp; c += 1) H[r * sp + c] = jointIsChild ? this.coupling(js, j, slot, r, c) : this.coupling(js, j, slot, c, r);
+        for (let c = 0; c < sp; c += 1)
+          H[r * sp + c] = jointIsChild ? this.coupling(js, j, slot, r, c) : this.coupling(js, j, slot, c, r);
       }
       for (let c = 0; c < sp; c += 1) {
         for (let r = 0; r < s; r += 1) col[r] = H[r * sp + c];

@@ -119,7 +119,9 @@ export abstract class Joint {
       throw new RangeError(`${fn}: bodies 'a' (n = ${D.n}) and 'b' (n = ${b.D.n}) must have the same dimension`);
     }
     if (a.motion === MOTION_STATIC && (b === null || b.motion === MOTION_STATIC)) {
-      throw new RangeError(`${fn}: at least one body of a joint must be able to move (got two static bodies or a static body and the world)`);
+      throw new RangeError(
+        `${fn}: at least one body of a joint must be able to move (got two static bodies or a static body and the world)`,
+      );
     }
     checkJointOptionNames(fn, opts, extraNames);
     const anchorA = readVector(D, fn, 'localA', localA);

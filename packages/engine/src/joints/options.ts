@@ -27,7 +27,9 @@ const JOINT_BOUNDS: Readonly<Record<string, readonly [number, string]>> = {
 function checkJointBound(fn: string, name: string, v: number): void {
   const bound = JOINT_BOUNDS[name.startsWith('opts.') ? name.slice(5) : name];
   if (bound !== undefined && !(Math.abs(v) <= bound[0])) {
-    throw new RangeError(`${fn}: argument '${name}' must be within ±${formatBound(bound[0])} ${bound[1]} (Body.limits), got ${v}`);
+    throw new RangeError(
+      `${fn}: argument '${name}' must be within ±${formatBound(bound[0])} ${bound[1]} (Body.limits), got ${v}`,
+    );
   }
 }
 

@@ -64,24 +64,31 @@ export class SubspaceJoint extends Joint {
   constructor(a: Body, b: Body | null, opts: SubspaceJointOptions) {
     const fn = 'new SubspaceJoint';
     if (opts === null || typeof opts !== 'object') {
-      throw new TypeError(`${fn}: argument 'opts' must be an object { lockAxes | freeAxes, lockPlanes | freePlanes, worldFrame }`);
+      throw new TypeError(
+        `${fn}: argument 'opts' must be an object { lockAxes | freeAxes, lockPlanes | freePlanes, worldFrame }`,
+      );
     }
     const o = opts as Record<string, unknown>;
     const n = a instanceof Object && (a as { D?: { n: number } }).D ? (a as Body).D.n : 0;
     const zeros = new Array<number>(n).fill(0);
     super(fn, a, b, o.localA ?? zeros, o.localB ?? zeros, o, NAMES, 0, (D) => D.n + D.k);
     const D = this.D;
-    if (o.lockAxes !== undefined && o.freeAxes !== undefined) throw new RangeError(`${fn}: give 'opts.lockAxes' or 'opts.freeAxes', not both`);
-    if (o.lockPlanes !== undefined && o.freePlanes !== undefined) throw new RangeError(`${fn}: give 'opts.lockPlanes' or 'opts.freePlanes', not both`);
+    if (o.lockAxes !== undefined && o.freeAxes !== undefined)
+      throw new RangeError(`${fn}: give 'opts.lockAxes' or 'opts.freeAxes', not both`);
+    if (o.lockPlanes !== undefined && o.freePlanes !== undefined)
+      throw new RangeError(`${fn}: give 'opts.lockPlanes' or 'opts.freePlanes', not both`);
     let axes: Int32Array = new Int32Array(0);
     if (o.lockAxes !== undefined) axes = readIndexList(fn, 'opts.lockAxes', o.lockAxes, D.n, 'axis');
     else if (o.freeAxes !== undefined) axes = complement(readIndexList(fn, 'opts.freeAxes', o.freeAxes, D.n, 'axis'), D.n);
     let planes: Int32Array = new Int32Array(0);
     if (o.lockPlanes !== undefined) planes = readIndexList(fn, 'opts.lockPlanes', o.lockPlanes, D.k, 'plane');
-    else if (o.freePlanes !== undefined) planes = complement(readIndexList(fn, 'opts.freePlanes', o.freePlanes, D.k, 'plane'), D.k);
+    else if (o.freePlanes !== undefined)
+      planes = complement(readIndexList(fn, 'opts.freePlanes', o.freePlanes, D.k, 'plane'), D.k);
     const worldFrame = o.worldFrame === undefined ? false : readBoolean(fn, 'opts.worldFrame', o.worldFrame);
     if (axes.length + planes.length === 0) {
-      throw new RangeError(`${fn}: the joint locks nothing: give 'opts.lockAxes' / 'opts.freeAxes' or 'opts.lockPlanes' / 'opts.freePlanes' that lock at least one axis or plane`);
+      throw new RangeError(
+        `${fn}: the joint locks nothing: give 'opts.lockAxes' / 'opts.freeAxes' or 'opts.lockPlanes' / 'opts.freePlanes' that lock at least one axis or plane`,
+      );
     }
     this.axes = axes;
     this.planes = planes;

@@ -492,38 +492,122 @@ export class ContactSolver {
       rows[base + 15] = jb5;
       let KA = imA;
       let KB = imB;
-      const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
-      const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
+      const sa0 =
+        isoA >= 0
+          ? isoA * ja0
+          : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
+      const sb0 =
+        isoB >= 0
+          ? isoB * jb0
+          : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
       rows[base + 16] = sa0;
       rows[base + 22] = sb0;
       KA += sa0 * ja0;
       KB += sb0 * jb0;
-      const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
-      const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
+      const sa1 =
+        isoA >= 0
+          ? isoA * ja1
+          : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
+      const sb1 =
+        isoB >= 0
+          ? isoB * jb1
+          : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
       rows[base + 17] = sa1;
       rows[base + 23] = sb1;
       KA += sa1 * ja1;
       KB += sb1 * jb1;
-      const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 12] * ja0 + IW[IA + 13] * ja1 + IW[IA + 14] * ja2 + IW[IA + 15] * ja3 + IW[IA + 16] * ja4 + IW[IA + 17] * ja5;
-      const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 12] * jb0 + IW[IB + 13] * jb1 + IW[IB + 14] * jb2 + IW[IB + 15] * jb3 + IW[IB + 16] * jb4 + IW[IB + 17] * jb5;
+      const sa2 =
+        isoA >= 0
+          ? isoA * ja2
+          : 0 +
+            IW[IA + 12] * ja0 +
+            IW[IA + 13] * ja1 +
+            IW[IA + 14] * ja2 +
+            IW[IA + 15] * ja3 +
+            IW[IA + 16] * ja4 +
+            IW[IA + 17] * ja5;
+      const sb2 =
+        isoB >= 0
+          ? isoB * jb2
+          : 0 +
+            IW[IB + 12] * jb0 +
+            IW[IB + 13] * jb1 +
+            IW[IB + 14] * jb2 +
+            IW[IB + 15] * jb3 +
+            IW[IB + 16] * jb4 +
+            IW[IB + 17] * jb5;
       rows[base + 18] = sa2;
       rows[base + 24] = sb2;
       KA += sa2 * ja2;
       KB += sb2 * jb2;
-      const sa3 = isoA >= 0 ? isoA * ja3 : 0 + IW[IA + 18] * ja0 + IW[IA + 19] * ja1 + IW[IA + 20] * ja2 + IW[IA + 21] * ja3 + IW[IA + 22] * ja4 + IW[IA + 23] * ja5;
-      const sb3 = isoB >= 0 ? isoB * jb3 : 0 + IW[IB + 18] * jb0 + IW[IB + 19] * jb1 + IW[IB + 20] * jb2 + IW[IB + 21] * jb3 + IW[IB + 22] * jb4 + IW[IB + 23] * jb5;
+      const sa3 =
+        isoA >= 0
+          ? isoA * ja3
+          : 0 +
+            IW[IA + 18] * ja0 +
+            IW[IA + 19] * ja1 +
+            IW[IA + 20] * ja2 +
+            IW[IA + 21] * ja3 +
+            IW[IA + 22] * ja4 +
+            IW[IA + 23] * ja5;
+      const sb3 =
+        isoB >= 0
+          ? isoB * jb3
+          : 0 +
+            IW[IB + 18] * jb0 +
+            IW[IB + 19] * jb1 +
+            IW[IB + 20] * jb2 +
+            IW[IB + 21] * jb3 +
+            IW[IB + 22] * jb4 +
+            IW[IB + 23] * jb5;
       rows[base + 19] = sa3;
       rows[base + 25] = sb3;
       KA += sa3 * ja3;
       KB += sb3 * jb3;
-      const sa4 = isoA >= 0 ? isoA * ja4 : 0 + IW[IA + 24] * ja0 + IW[IA + 25] * ja1 + IW[IA + 26] * ja2 + IW[IA + 27] * ja3 + IW[IA + 28] * ja4 + IW[IA + 29] * ja5;
-      const sb4 = isoB >= 0 ? isoB * jb4 : 0 + IW[IB + 24] * jb0 + IW[IB + 25] * jb1 + IW[IB + 26] * jb2 + IW[IB + 27] * jb3 + IW[IB + 28] * jb4 + IW[IB + 29] * jb5;
+      const sa4 =
+        isoA >= 0
+          ? isoA * ja4
+          : 0 +
+            IW[IA + 24] * ja0 +
+            IW[IA + 25] * ja1 +
+            IW[IA + 26] * ja2 +
+            IW[IA + 27] * ja3 +
+            IW[IA + 28] * ja4 +
+            IW[IA + 29] * ja5;
+      const sb4 =
+        isoB >= 0
+          ? isoB * jb4
+          : 0 +
+            IW[IB + 24] * jb0 +
+            IW[IB + 25] * jb1 +
+            IW[IB + 26] * jb2 +
+            IW[IB + 27] * jb3 +
+            IW[IB + 28] * jb4 +
+            IW[IB + 29] * jb5;
       rows[base + 20] = sa4;
       rows[base + 26] = sb4;
       KA += sa4 * ja4;
       KB += sb4 * jb4;
-      const sa5 = isoA >= 0 ? isoA * ja5 : 0 + IW[IA + 30] * ja0 + IW[IA + 31] * ja1 + IW[IA + 32] * ja2 + IW[IA + 33] * ja3 + IW[IA + 34] * ja4 + IW[IA + 35] * ja5;
-      const sb5 = isoB >= 0 ? isoB * jb5 : 0 + IW[IB + 30] * jb0 + IW[IB + 31] * jb1 + IW[IB + 32] * jb2 + IW[IB + 33] * jb3 + IW[IB + 34] * jb4 + IW[IB + 35] * jb5;
+      const sa5 =
+        isoA >= 0
+          ? isoA * ja5
+          : 0 +
+            IW[IA + 30] * ja0 +
+            IW[IA + 31] * ja1 +
+            IW[IA + 32] * ja2 +
+            IW[IA + 33] * ja3 +
+            IW[IA + 34] * ja4 +
+            IW[IA + 35] * ja5;
+      const sb5 =
+        isoB >= 0
+          ? isoB * jb5
+          : 0 +
+            IW[IB + 30] * jb0 +
+            IW[IB + 31] * jb1 +
+            IW[IB + 32] * jb2 +
+            IW[IB + 33] * jb3 +
+            IW[IB + 34] * jb4 +
+            IW[IB + 35] * jb5;
       rows[base + 21] = sa5;
       rows[base + 27] = sb5;
       KA += sa5 * ja5;
@@ -532,7 +616,6 @@ export class ContactSolver {
       rows[base + 28] = K > 0 ? 1 / K : 0;
       rows[base + 29] = KA;
       rows[base + 30] = KB;
-
     } else {
       // J = r ∧ dir
       for (let pl = 0; pl < k; pl += 1) {
@@ -883,10 +966,18 @@ export class ContactSolver {
     const vb = b * 3;
     const wa = a * 3;
     const wb = b * 3;
-    let vax = V[va], vay = V[va + 1], vaz = V[va + 2];
-    let vbx = V[vb], vby = V[vb + 1], vbz = V[vb + 2];
-    let wa0 = W[wa], wa1 = W[wa + 1], wa2 = W[wa + 2];
-    let wb0 = W[wb], wb1 = W[wb + 1], wb2 = W[wb + 2];
+    let vax = V[va],
+      vay = V[va + 1],
+      vaz = V[va + 2];
+    let vbx = V[vb],
+      vby = V[vb + 1],
+      vbz = V[vb + 2];
+    let wa0 = W[wa],
+      wa1 = W[wa + 1],
+      wa2 = W[wa + 2];
+    let wb0 = W[wb],
+      wb1 = W[wb + 1],
+      wb2 = W[wb + 2];
     const mu = this.mfFriction[mf];
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
@@ -941,35 +1032,48 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
-          vax -= la * patch[t1]; vbx += lb * patch[t1];
-          vay -= la * patch[t1 + 1]; vby += lb * patch[t1 + 1];
-          vaz -= la * patch[t1 + 2]; vbz += lb * patch[t1 + 2];
+          vax -= la * patch[t1];
+          vbx += lb * patch[t1];
+          vay -= la * patch[t1 + 1];
+          vby += lb * patch[t1 + 1];
+          vaz -= la * patch[t1 + 2];
+          vbz += lb * patch[t1 + 2];
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * patch[t1 + 9]; wb0 += gb * patch[t1 + 12];
-          wa1 -= ga * patch[t1 + 10]; wb1 += gb * patch[t1 + 13];
-          wa2 -= ga * patch[t1 + 11]; wb2 += gb * patch[t1 + 14];
+          wa0 -= ga * patch[t1 + 9];
+          wb0 += gb * patch[t1 + 12];
+          wa1 -= ga * patch[t1 + 10];
+          wb1 += gb * patch[t1 + 13];
+          wa2 -= ga * patch[t1 + 11];
+          wb2 += gb * patch[t1 + 14];
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
-          vax -= la * patch[t2]; vbx += lb * patch[t2];
-          vay -= la * patch[t2 + 1]; vby += lb * patch[t2 + 1];
-          vaz -= la * patch[t2 + 2]; vbz += lb * patch[t2 + 2];
+          vax -= la * patch[t2];
+          vbx += lb * patch[t2];
+          vay -= la * patch[t2 + 1];
+          vby += lb * patch[t2 + 1];
+          vaz -= la * patch[t2 + 2];
+          vbz += lb * patch[t2 + 2];
           const ga = fa * d2;
           const gb = fb * d2;
-          wa0 -= ga * patch[t2 + 9]; wb0 += gb * patch[t2 + 12];
-          wa1 -= ga * patch[t2 + 10]; wb1 += gb * patch[t2 + 13];
-          wa2 -= ga * patch[t2 + 11]; wb2 += gb * patch[t2 + 14];
+          wa0 -= ga * patch[t2 + 9];
+          wb0 += gb * patch[t2 + 12];
+          wa1 -= ga * patch[t2 + 10];
+          wb1 += gb * patch[t2 + 13];
+          wa2 -= ga * patch[t2 + 11];
+          wb2 += gb * patch[t2 + 14];
         }
       }
       if (radius > 0) {
         const limit = maxT * radius;
         const w1 = pb + 36;
         const v1 =
-          (patch[w1 + 6] * wb0 - patch[w1 + 3] * wa0) +
+          patch[w1 + 6] * wb0 -
+          patch[w1 + 3] * wa0 +
           (patch[w1 + 7] * wb1 - patch[w1 + 4] * wa1) +
           (patch[w1 + 8] * wb2 - patch[w1 + 5] * wa2);
         const K1 = fa * patch[w1 + 16] + fb * patch[w1 + 17];
@@ -988,9 +1092,12 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * patch[w1 + 9]; wb0 += gb * patch[w1 + 12];
-          wa1 -= ga * patch[w1 + 10]; wb1 += gb * patch[w1 + 13];
-          wa2 -= ga * patch[w1 + 11]; wb2 += gb * patch[w1 + 14];
+          wa0 -= ga * patch[w1 + 9];
+          wb0 += gb * patch[w1 + 12];
+          wa1 -= ga * patch[w1 + 10];
+          wb1 += gb * patch[w1 + 13];
+          wa2 -= ga * patch[w1 + 11];
+          wb2 += gb * patch[w1 + 14];
         }
       }
     }
@@ -1015,20 +1122,34 @@ export class ContactSolver {
       if (moved > change) change = moved;
       const la = ima * dl;
       const lb = imb * dl;
-      vax -= la * rows[rb]; vbx += lb * rows[rb];
-      vay -= la * rows[rb + 1]; vby += lb * rows[rb + 1];
-      vaz -= la * rows[rb + 2]; vbz += lb * rows[rb + 2];
+      vax -= la * rows[rb];
+      vbx += lb * rows[rb];
+      vay -= la * rows[rb + 1];
+      vby += lb * rows[rb + 1];
+      vaz -= la * rows[rb + 2];
+      vbz += lb * rows[rb + 2];
       const ga = fa * dl;
       const gb = fb * dl;
-      wa0 -= ga * rows[rb + 9]; wb0 += gb * rows[rb + 12];
-      wa1 -= ga * rows[rb + 10]; wb1 += gb * rows[rb + 13];
-      wa2 -= ga * rows[rb + 11]; wb2 += gb * rows[rb + 14];
+      wa0 -= ga * rows[rb + 9];
+      wb0 += gb * rows[rb + 12];
+      wa1 -= ga * rows[rb + 10];
+      wb1 += gb * rows[rb + 13];
+      wa2 -= ga * rows[rb + 11];
+      wb2 += gb * rows[rb + 14];
     }
     // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
-    V[va] = vax; V[va + 1] = vay; V[va + 2] = vaz;
-    W[wa] = wa0; W[wa + 1] = wa1; W[wa + 2] = wa2;
-    V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz;
-    W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2;
+    V[va] = vax;
+    V[va + 1] = vay;
+    V[va + 2] = vaz;
+    W[wa] = wa0;
+    W[wa + 1] = wa1;
+    W[wa + 2] = wa2;
+    V[vb] = vbx;
+    V[vb + 1] = vby;
+    V[vb + 2] = vbz;
+    W[wb] = wb0;
+    W[wb + 1] = wb1;
+    W[wb + 2] = wb2;
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
@@ -1059,10 +1180,26 @@ export class ContactSolver {
     const vb = b * 4;
     const wa = a * 6;
     const wb = b * 6;
-    let vax = V[va], vay = V[va + 1], vaz = V[va + 2], vaw = V[va + 3];
-    let vbx = V[vb], vby = V[vb + 1], vbz = V[vb + 2], vbw = V[vb + 3];
-    let wa0 = W[wa], wa1 = W[wa + 1], wa2 = W[wa + 2], wa3 = W[wa + 3], wa4 = W[wa + 4], wa5 = W[wa + 5];
-    let wb0 = W[wb], wb1 = W[wb + 1], wb2 = W[wb + 2], wb3 = W[wb + 3], wb4 = W[wb + 4], wb5 = W[wb + 5];
+    let vax = V[va],
+      vay = V[va + 1],
+      vaz = V[va + 2],
+      vaw = V[va + 3];
+    let vbx = V[vb],
+      vby = V[vb + 1],
+      vbz = V[vb + 2],
+      vbw = V[vb + 3];
+    let wa0 = W[wa],
+      wa1 = W[wa + 1],
+      wa2 = W[wa + 2],
+      wa3 = W[wa + 3],
+      wa4 = W[wa + 4],
+      wa5 = W[wa + 5];
+    let wb0 = W[wb],
+      wb1 = W[wb + 1],
+      wb2 = W[wb + 2],
+      wb3 = W[wb + 3],
+      wb4 = W[wb + 4],
+      wb5 = W[wb + 5];
     const mu = this.mfFriction[mf];
     const first = this.mfFirst[mf];
     const last = first + this.mfPoints[mf];
@@ -1143,54 +1280,84 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
-          vax -= la * patch[t1]; vbx += lb * patch[t1];
-          vay -= la * patch[t1 + 1]; vby += lb * patch[t1 + 1];
-          vaz -= la * patch[t1 + 2]; vbz += lb * patch[t1 + 2];
-          vaw -= la * patch[t1 + 3]; vbw += lb * patch[t1 + 3];
+          vax -= la * patch[t1];
+          vbx += lb * patch[t1];
+          vay -= la * patch[t1 + 1];
+          vby += lb * patch[t1 + 1];
+          vaz -= la * patch[t1 + 2];
+          vbz += lb * patch[t1 + 2];
+          vaw -= la * patch[t1 + 3];
+          vbw += lb * patch[t1 + 3];
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * patch[t1 + 16]; wb0 += gb * patch[t1 + 22];
-          wa1 -= ga * patch[t1 + 17]; wb1 += gb * patch[t1 + 23];
-          wa2 -= ga * patch[t1 + 18]; wb2 += gb * patch[t1 + 24];
-          wa3 -= ga * patch[t1 + 19]; wb3 += gb * patch[t1 + 25];
-          wa4 -= ga * patch[t1 + 20]; wb4 += gb * patch[t1 + 26];
-          wa5 -= ga * patch[t1 + 21]; wb5 += gb * patch[t1 + 27];
+          wa0 -= ga * patch[t1 + 16];
+          wb0 += gb * patch[t1 + 22];
+          wa1 -= ga * patch[t1 + 17];
+          wb1 += gb * patch[t1 + 23];
+          wa2 -= ga * patch[t1 + 18];
+          wb2 += gb * patch[t1 + 24];
+          wa3 -= ga * patch[t1 + 19];
+          wb3 += gb * patch[t1 + 25];
+          wa4 -= ga * patch[t1 + 20];
+          wb4 += gb * patch[t1 + 26];
+          wa5 -= ga * patch[t1 + 21];
+          wb5 += gb * patch[t1 + 27];
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > change) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
-          vax -= la * patch[t2]; vbx += lb * patch[t2];
-          vay -= la * patch[t2 + 1]; vby += lb * patch[t2 + 1];
-          vaz -= la * patch[t2 + 2]; vbz += lb * patch[t2 + 2];
-          vaw -= la * patch[t2 + 3]; vbw += lb * patch[t2 + 3];
+          vax -= la * patch[t2];
+          vbx += lb * patch[t2];
+          vay -= la * patch[t2 + 1];
+          vby += lb * patch[t2 + 1];
+          vaz -= la * patch[t2 + 2];
+          vbz += lb * patch[t2 + 2];
+          vaw -= la * patch[t2 + 3];
+          vbw += lb * patch[t2 + 3];
           const ga = fa * d2;
           const gb = fb * d2;
-          wa0 -= ga * patch[t2 + 16]; wb0 += gb * patch[t2 + 22];
-          wa1 -= ga * patch[t2 + 17]; wb1 += gb * patch[t2 + 23];
-          wa2 -= ga * patch[t2 + 18]; wb2 += gb * patch[t2 + 24];
-          wa3 -= ga * patch[t2 + 19]; wb3 += gb * patch[t2 + 25];
-          wa4 -= ga * patch[t2 + 20]; wb4 += gb * patch[t2 + 26];
-          wa5 -= ga * patch[t2 + 21]; wb5 += gb * patch[t2 + 27];
+          wa0 -= ga * patch[t2 + 16];
+          wb0 += gb * patch[t2 + 22];
+          wa1 -= ga * patch[t2 + 17];
+          wb1 += gb * patch[t2 + 23];
+          wa2 -= ga * patch[t2 + 18];
+          wb2 += gb * patch[t2 + 24];
+          wa3 -= ga * patch[t2 + 19];
+          wb3 += gb * patch[t2 + 25];
+          wa4 -= ga * patch[t2 + 20];
+          wb4 += gb * patch[t2 + 26];
+          wa5 -= ga * patch[t2 + 21];
+          wb5 += gb * patch[t2 + 27];
         }
         if (d3 !== 0) {
           const moved = Math.abs(d3) * K3;
           if (moved > change) change = moved;
           const la = ima * d3;
           const lb = imb * d3;
-          vax -= la * patch[t3]; vbx += lb * patch[t3];
-          vay -= la * patch[t3 + 1]; vby += lb * patch[t3 + 1];
-          vaz -= la * patch[t3 + 2]; vbz += lb * patch[t3 + 2];
-          vaw -= la * patch[t3 + 3]; vbw += lb * patch[t3 + 3];
+          vax -= la * patch[t3];
+          vbx += lb * patch[t3];
+          vay -= la * patch[t3 + 1];
+          vby += lb * patch[t3 + 1];
+          vaz -= la * patch[t3 + 2];
+          vbz += lb * patch[t3 + 2];
+          vaw -= la * patch[t3 + 3];
+          vbw += lb * patch[t3 + 3];
           const ga = fa * d3;
           const gb = fb * d3;
-          wa0 -= ga * patch[t3 + 16]; wb0 += gb * patch[t3 + 22];
-          wa1 -= ga * patch[t3 + 17]; wb1 += gb * patch[t3 + 23];
-          wa2 -= ga * patch[t3 + 18]; wb2 += gb * patch[t3 + 24];
-          wa3 -= ga * patch[t3 + 19]; wb3 += gb * patch[t3 + 25];
-          wa4 -= ga * patch[t3 + 20]; wb4 += gb * patch[t3 + 26];
-          wa5 -= ga * patch[t3 + 21]; wb5 += gb * patch[t3 + 27];
+          wa0 -= ga * patch[t3 + 16];
+          wb0 += gb * patch[t3 + 22];
+          wa1 -= ga * patch[t3 + 17];
+          wb1 += gb * patch[t3 + 23];
+          wa2 -= ga * patch[t3 + 18];
+          wb2 += gb * patch[t3 + 24];
+          wa3 -= ga * patch[t3 + 19];
+          wb3 += gb * patch[t3 + 25];
+          wa4 -= ga * patch[t3 + 20];
+          wb4 += gb * patch[t3 + 26];
+          wa5 -= ga * patch[t3 + 21];
+          wb5 += gb * patch[t3 + 27];
         }
       }
       if (radius > 0) {
@@ -1199,21 +1366,24 @@ export class ContactSolver {
         const w2 = pb + 124;
         const w3 = pb + 155;
         const v1 =
-          (patch[w1 + 10] * wb0 - patch[w1 + 4] * wa0) +
+          patch[w1 + 10] * wb0 -
+          patch[w1 + 4] * wa0 +
           (patch[w1 + 11] * wb1 - patch[w1 + 5] * wa1) +
           (patch[w1 + 12] * wb2 - patch[w1 + 6] * wa2) +
           (patch[w1 + 13] * wb3 - patch[w1 + 7] * wa3) +
           (patch[w1 + 14] * wb4 - patch[w1 + 8] * wa4) +
           (patch[w1 + 15] * wb5 - patch[w1 + 9] * wa5);
         const v2 =
-          (patch[w2 + 10] * wb0 - patch[w2 + 4] * wa0) +
+          patch[w2 + 10] * wb0 -
+          patch[w2 + 4] * wa0 +
           (patch[w2 + 11] * wb1 - patch[w2 + 5] * wa1) +
           (patch[w2 + 12] * wb2 - patch[w2 + 6] * wa2) +
           (patch[w2 + 13] * wb3 - patch[w2 + 7] * wa3) +
           (patch[w2 + 14] * wb4 - patch[w2 + 8] * wa4) +
           (patch[w2 + 15] * wb5 - patch[w2 + 9] * wa5);
         const v3 =
-          (patch[w3 + 10] * wb0 - patch[w3 + 4] * wa0) +
+          patch[w3 + 10] * wb0 -
+          patch[w3 + 4] * wa0 +
           (patch[w3 + 11] * wb1 - patch[w3 + 5] * wa1) +
           (patch[w3 + 12] * wb2 - patch[w3 + 6] * wa2) +
           (patch[w3 + 13] * wb3 - patch[w3 + 7] * wa3) +
@@ -1247,36 +1417,54 @@ export class ContactSolver {
           if (moved > change) change = moved;
           const ga = fa * d1;
           const gb = fb * d1;
-          wa0 -= ga * patch[w1 + 16]; wb0 += gb * patch[w1 + 22];
-          wa1 -= ga * patch[w1 + 17]; wb1 += gb * patch[w1 + 23];
-          wa2 -= ga * patch[w1 + 18]; wb2 += gb * patch[w1 + 24];
-          wa3 -= ga * patch[w1 + 19]; wb3 += gb * patch[w1 + 25];
-          wa4 -= ga * patch[w1 + 20]; wb4 += gb * patch[w1 + 26];
-          wa5 -= ga * patch[w1 + 21]; wb5 += gb * patch[w1 + 27];
+          wa0 -= ga * patch[w1 + 16];
+          wb0 += gb * patch[w1 + 22];
+          wa1 -= ga * patch[w1 + 17];
+          wb1 += gb * patch[w1 + 23];
+          wa2 -= ga * patch[w1 + 18];
+          wb2 += gb * patch[w1 + 24];
+          wa3 -= ga * patch[w1 + 19];
+          wb3 += gb * patch[w1 + 25];
+          wa4 -= ga * patch[w1 + 20];
+          wb4 += gb * patch[w1 + 26];
+          wa5 -= ga * patch[w1 + 21];
+          wb5 += gb * patch[w1 + 27];
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > change) change = moved;
           const ga = fa * d2;
           const gb = fb * d2;
-          wa0 -= ga * patch[w2 + 16]; wb0 += gb * patch[w2 + 22];
-          wa1 -= ga * patch[w2 + 17]; wb1 += gb * patch[w2 + 23];
-          wa2 -= ga * patch[w2 + 18]; wb2 += gb * patch[w2 + 24];
-          wa3 -= ga * patch[w2 + 19]; wb3 += gb * patch[w2 + 25];
-          wa4 -= ga * patch[w2 + 20]; wb4 += gb * patch[w2 + 26];
-          wa5 -= ga * patch[w2 + 21]; wb5 += gb * patch[w2 + 27];
+          wa0 -= ga * patch[w2 + 16];
+          wb0 += gb * patch[w2 + 22];
+          wa1 -= ga * patch[w2 + 17];
+          wb1 += gb * patch[w2 + 23];
+          wa2 -= ga * patch[w2 + 18];
+          wb2 += gb * patch[w2 + 24];
+          wa3 -= ga * patch[w2 + 19];
+          wb3 += gb * patch[w2 + 25];
+          wa4 -= ga * patch[w2 + 20];
+          wb4 += gb * patch[w2 + 26];
+          wa5 -= ga * patch[w2 + 21];
+          wb5 += gb * patch[w2 + 27];
         }
         if (d3 !== 0) {
           const moved = Math.abs(d3) * K3;
           if (moved > change) change = moved;
           const ga = fa * d3;
           const gb = fb * d3;
-          wa0 -= ga * patch[w3 + 16]; wb0 += gb * patch[w3 + 22];
-          wa1 -= ga * patch[w3 + 17]; wb1 += gb * patch[w3 + 23];
-          wa2 -= ga * patch[w3 + 18]; wb2 += gb * patch[w3 + 24];
-          wa3 -= ga * patch[w3 + 19]; wb3 += gb * patch[w3 + 25];
-          wa4 -= ga * patch[w3 + 20]; wb4 += gb * patch[w3 + 26];
-          wa5 -= ga * patch[w3 + 21]; wb5 += gb * patch[w3 + 27];
+          wa0 -= ga * patch[w3 + 16];
+          wb0 += gb * patch[w3 + 22];
+          wa1 -= ga * patch[w3 + 17];
+          wb1 += gb * patch[w3 + 23];
+          wa2 -= ga * patch[w3 + 18];
+          wb2 += gb * patch[w3 + 24];
+          wa3 -= ga * patch[w3 + 19];
+          wb3 += gb * patch[w3 + 25];
+          wa4 -= ga * patch[w3 + 20];
+          wb4 += gb * patch[w3 + 26];
+          wa5 -= ga * patch[w3 + 21];
+          wb5 += gb * patch[w3 + 27];
         }
       }
     }
@@ -1305,24 +1493,50 @@ export class ContactSolver {
       if (moved > change) change = moved;
       const la = ima * dl;
       const lb = imb * dl;
-      vax -= la * rows[rb]; vbx += lb * rows[rb];
-      vay -= la * rows[rb + 1]; vby += lb * rows[rb + 1];
-      vaz -= la * rows[rb + 2]; vbz += lb * rows[rb + 2];
-      vaw -= la * rows[rb + 3]; vbw += lb * rows[rb + 3];
+      vax -= la * rows[rb];
+      vbx += lb * rows[rb];
+      vay -= la * rows[rb + 1];
+      vby += lb * rows[rb + 1];
+      vaz -= la * rows[rb + 2];
+      vbz += lb * rows[rb + 2];
+      vaw -= la * rows[rb + 3];
+      vbw += lb * rows[rb + 3];
       const ga = fa * dl;
       const gb = fb * dl;
-      wa0 -= ga * rows[rb + 16]; wb0 += gb * rows[rb + 22];
-      wa1 -= ga * rows[rb + 17]; wb1 += gb * rows[rb + 23];
-      wa2 -= ga * rows[rb + 18]; wb2 += gb * rows[rb + 24];
-      wa3 -= ga * rows[rb + 19]; wb3 += gb * rows[rb + 25];
-      wa4 -= ga * rows[rb + 20]; wb4 += gb * rows[rb + 26];
-      wa5 -= ga * rows[rb + 21]; wb5 += gb * rows[rb + 27];
+      wa0 -= ga * rows[rb + 16];
+      wb0 += gb * rows[rb + 22];
+      wa1 -= ga * rows[rb + 17];
+      wb1 += gb * rows[rb + 23];
+      wa2 -= ga * rows[rb + 18];
+      wb2 += gb * rows[rb + 24];
+      wa3 -= ga * rows[rb + 19];
+      wb3 += gb * rows[rb + 25];
+      wa4 -= ga * rows[rb + 20];
+      wb4 += gb * rows[rb + 26];
+      wa5 -= ga * rows[rb + 21];
+      wb5 += gb * rows[rb + 27];
     }
     // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
-    V[va] = vax; V[va + 1] = vay; V[va + 2] = vaz; V[va + 3] = vaw;
-    W[wa] = wa0; W[wa + 1] = wa1; W[wa + 2] = wa2; W[wa + 3] = wa3; W[wa + 4] = wa4; W[wa + 5] = wa5;
-    V[vb] = vbx; V[vb + 1] = vby; V[vb + 2] = vbz; V[vb + 3] = vbw;
-    W[wb] = wb0; W[wb + 1] = wb1; W[wb + 2] = wb2; W[wb + 3] = wb3; W[wb + 4] = wb4; W[wb + 5] = wb5;
+    V[va] = vax;
+    V[va + 1] = vay;
+    V[va + 2] = vaz;
+    V[va + 3] = vaw;
+    W[wa] = wa0;
+    W[wa + 1] = wa1;
+    W[wa + 2] = wa2;
+    W[wa + 3] = wa3;
+    W[wa + 4] = wa4;
+    W[wa + 5] = wa5;
+    V[vb] = vbx;
+    V[vb + 1] = vby;
+    V[vb + 2] = vbz;
+    V[vb + 3] = vbw;
+    W[wb] = wb0;
+    W[wb + 1] = wb1;
+    W[wb + 2] = wb2;
+    W[wb + 3] = wb3;
+    W[wb + 4] = wb4;
+    W[wb + 5] = wb5;
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 
@@ -1487,7 +1701,8 @@ export class ContactSolver {
       const pb = mf * PR * RS;
       for (let d = 0; d < n; d += 1) {
         let s = 0;
-        for (let t = 0; t < m; t += 1) s += (this.lambdaP[mf * m + t] - (shocked ? this.keptP[mf * m + t] : 0)) * patch[pb + t * RS + d];
+        for (let t = 0; t < m; t += 1)
+          s += (this.lambdaP[mf * m + t] - (shocked ? this.keptP[mf * m + t] : 0)) * patch[pb + t * RS + d];
         contacts.patchTangent[slot * n + d] = s;
       }
       for (let pl = 0; pl < k; pl += 1) {

@@ -37,11 +37,11 @@ interface Built {
  * must be paid for by a feature and argued in the commit.
  */
 const BUDGET: Record<string, number> = {
-  boxes: 40_300,
-  'boxes-3d': 37_000,
-  'boxes-hinge': 50_800,
-  'boxes-ray': 42_200,
-  'boxes-tori': 41_500,
+  boxes: 43_800,
+  'boxes-3d': 40_400,
+  'boxes-hinge': 55_300,
+  'boxes-ray': 45_800,
+  'boxes-tori': 45_100,
   rotor3: 2_000,
 };
 

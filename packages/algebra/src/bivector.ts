@@ -109,11 +109,27 @@ export function bivectorCommutator(D: Dims, out: Float64Array, A: ArrayLike<numb
   checkOutBivector(D, 'out', out, fn);
   checkBivector(D, 'A', A, fn);
   checkBivector(D, 'B', B, fn);
-  const { n, k, planeI, planeJ } = D;
+  const { n, k } = D;
   const s = commutatorScratch[n] ?? (commutatorScratch[n] = new Float64Array(2 * n * n + k));
-  const a = s.subarray(0, n * n);
-  const b = s.subarray(n * n, 2 * n * n);
   const res = s.subarray(2 * n * n);
+  bivectorCommutatorUnchecked(D, res, A, B, s.subarray(0, n * n), s.subarray(n * n, 2 * n * n));
+  out.set(res);
+  return out;
+}
+
+/**
+ * {@link bivectorCommutator} without checks or allocation, for hot loops: `a` and `b` are n×n
+ * scratch; `out` must not alias A or B.
+ */
+export function bivectorCommutatorUnchecked(
+  D: Dims,
+  out: Float64Array,
+  A: ArrayLike<number>,
+  B: ArrayLike<number>,
+  a: Float64Array,
+  b: Float64Array,
+): Float64Array {
+  const { n, k, planeI, planeJ } = D;
   bivectorToMatrixUnchecked(D, a, A);
   bivectorToMatrixUnchecked(D, b, B);
   for (let p = 0; p < k; p += 1) {
@@ -122,9 +138,8 @@ export function bivectorCommutator(D: Dims, out: Float64Array, A: ArrayLike<numb
     // Entry [j][i] of the commutator (it is antisymmetric, so that entry is its component).
     let x = 0;
     for (let m = 0; m < n; m += 1) x += a[j * n + m]! * b[m * n + i]! - b[j * n + m]! * a[m * n + i]!;
-    res[p] = x;
+    out[p] = x;
   }
-  out.set(res);
   return out;
 }
 

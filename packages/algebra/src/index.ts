@@ -15,6 +15,7 @@ export {
   bivectorToMatrixUnchecked,
   matrixToBivector,
   bivectorCommutator,
+  bivectorCommutatorUnchecked,
   bivectorApply,
   wedgeMatrix,
   bivectorDot,

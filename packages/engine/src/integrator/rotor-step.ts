@@ -34,7 +34,7 @@
  *
  * @module
  */
-import { bivectorToMatrixUnchecked } from '@physin/algebra';
+import { bivectorCommutatorUnchecked } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
 import { angularVelocityFromMomentum } from '../inertia-world.js';
 import { STEP_H, STEP_ROTOR_ITERATIONS, STEP_ROTOR_TOLERANCE } from './step-constants.js';
@@ -226,7 +226,7 @@ export function advanceRotor(
     // rounding of L·ω, so bodies that differ by rounding (a 3D spin embedded in 4D) decide alike,
     // and a step that already kept E (a ball, a steady spin, a slow turn) costs nothing more.
     if (!(Math.abs(de) > ROTOR_ENERGY_TOLERANCE * e0)) return;
-    commutator(D, G, w, L, s.matA, s.matB);
+    bivectorCommutatorUnchecked(D, G, w, L, s.matA, s.matB);
     let g2 = 0;
     for (let p = 0; p < k; p += 1) g2 += G[p]! * G[p]!;
     if (!(g2 > 0)) return;
@@ -238,23 +238,6 @@ export function advanceRotor(
     // The turn is exact to rounding: the defect it adds is checked after the next step's turn.
     K.mul(R, s.turn, R);
     angularVelocityFromMomentum(D, w, R, invInertia, L, s.tmp);
-  }
-}
-
-/**
- * out = the bivector of the matrix commutator Ω_A Ω_B − Ω_B Ω_A (the convention of the algebra's
- * `bivectorCommutator`), unchecked and allocation-free; `a`, `b` are n×n scratch.
- */
-function commutator(D: Dims, out: Float64Array, A: Float64Array, B: Float64Array, a: Float64Array, b: Float64Array): void {
-  const { n, k, planeI, planeJ } = D;
-  bivectorToMatrixUnchecked(D, a, A);
-  bivectorToMatrixUnchecked(D, b, B);
-  for (let p = 0; p < k; p += 1) {
-    const i = planeI[p]!;
-    const j = planeJ[p]!;
-    let x = 0;
-    for (let m = 0; m < n; m += 1) x += a[j * n + m]! * b[m * n + i]! - b[j * n + m]! * a[m * n + i]!;
-    out[p] = x;
   }
 }
 

@@ -28,6 +28,7 @@ import type { Configuration, Stats } from 'webpack';
 import webpack from 'webpack';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { serveStatic } from '../../scripts/lib/static-server.mjs';
+import { collectProblems } from '../support/page-problems.js';
 
 const root = join(dirname(fileURLToPath(import.meta.url)), '../..');
 const apps = join(root, 'tests/consumers/apps');
@@ -172,17 +173,9 @@ describe.runIf(present)('the built apps in Chromium', () => {
   /** Opens the app, waits for its result, and collects every console error and failed request. */
   async function run(url: string, shot: string): Promise<{ result: Result; problems: string[]; workers: number }> {
     const page = await browser.newPage({ viewport: { width: 640, height: 400 } });
-    const problems: string[] = [];
+    const problems = collectProblems(page);
     let workers = 0;
     page.on('worker', () => void (workers += 1));
-    page.on('console', (m) => {
-      if (m.type() === 'error') problems.push(`console.error: ${m.text()}`);
-    });
-    page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()} ${r.failure()?.errorText ?? ''}`));
-    page.on('response', (r) => {
-      if (r.status() >= 400) problems.push(`HTTP ${r.status()}: ${r.url()}`);
-    });
     await page.goto(url);
     await page.waitForFunction(() => (globalThis as { physinApp?: unknown }).physinApp !== undefined, undefined, {
       timeout: 60_000,

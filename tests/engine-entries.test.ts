@@ -31,6 +31,7 @@ const PUBLIC = [
   'defaultParams',
   'dims',
   'momentumFromAngularVelocity',
+  'presets',
   'queryBox',
   'restoreWorld',
   'snapshotWorld',

@@ -23,6 +23,8 @@ export type { BodyOptions, BodyType, Material } from './body.js';
 export type { InputLimits } from './shapes/limits.js';
 export { defaultParams, validateParams } from './params.js';
 export type { Params } from './params.js';
+export { presets } from './presets.js';
+export type { Preset, Presets } from './presets.js';
 export { NonFiniteStateError } from './errors.js';
 export type { StateField } from './errors.js';
 export { angularVelocityFromMomentum, momentumFromAngularVelocity } from './inertia-world.js';

@@ -40,8 +40,8 @@ const query = new URLSearchParams(window.location.search);
 const startScene = query.get('scene');
 const state = {
   scene: (startScene !== null && startScene in SCENES ? startScene : 'chain of 10') as SceneName,
-  preset: 'default' as PresetName | 'custom',
-  ...PRESETS.default,
+  preset: 'balanced' as PresetName | 'custom',
+  ...PRESETS.balanced,
   seconds: 10,
 };
 
@@ -207,6 +207,6 @@ gui
 window.addEventListener('resize', () => (dirty = true));
 
 // The first picture: the three presets on the chosen scene.
-(['fast', 'default', 'accurate'] as const).forEach((name) => order(PRESETS[name]));
+(['fast', 'balanced', 'accurate'] as const).forEach((name) => order(PRESETS[name]));
 draw();
 frame();

@@ -1,19 +1,16 @@
 /**
- * The trade page's scenes, built on the engine directly (no DOM, so the page's worker can build
- * them too): each gives a world, its error now (m) and what the small view draws.
- *
- * - stack of 10: ten unit boxes on the ground; error = the largest drift of a box from where it
- *   started.
- * - chain of 10: the specification's chain (docs/joints.md): ten links of 1 kg, balls of radius 0.1
- *   whose anchors are at ±0.5 along the chain, the first pinned to the world at the origin; it
- *   starts horizontal, so it whips as it falls. Error = the largest gap a joint opens
- *   (`PointJoint.error()`).
- * - chain 1000:1: the same, the last link 1000 kg.
- * - 4D stack of 6: six unit hypercubes on the ground in 4D; error as the stack.
+ * The trade page's scenes: the physics (the worlds and their errors) is trade-core.mjs's, the code
+ * bench/trade.bench.mjs runs for docs/trade.md; this file adds what the small view draws. No DOM,
+ * so the page's worker can build them too.
  */
 import { rotorApplyVector } from '@physin/algebra';
-import { Body, HalfSpace, HyperBox, HyperSphere, PointJoint, World, dims } from '@physin/engine';
-import type { Dims, Params } from '@physin/engine';
+import { dims } from '@physin/engine';
+import type { Body, Dims, Params, World } from '@physin/engine';
+import { PRESETS as CORE_PRESETS, SCENES as CORE_SCENES } from './trade-core.mjs';
+import type { CoreScene, Knobs, PresetName, SceneName } from './trade-core.mjs';
+
+export { paramsOf } from './trade-core.mjs';
+export type { Knobs, PresetName, SceneName } from './trade-core.mjs';
 
 /** What the view draws of one body, in the x-y plane (the side view): a polygon or a disc. */
 export type Outline =
@@ -23,51 +20,56 @@ export type Outline =
 /** A scene to run. */
 export interface TradeScene {
   readonly world: World;
-  /** The scene's error now (m). */
+  /** The scene's error now (m, or rad for the spinning body). */
   error(): number;
+  /** The unit of the error. */
+  readonly unit: string;
   /** The bodies in the x-y plane, and the joints as segments [x0, y0, x1, y1, ...]. */
   outline(): { bodies: Outline[]; links: number[] };
   /** The view's window in x and y: [xMin, xMax, yMin, yMax] (m). */
   readonly frame: readonly [number, number, number, number];
 }
 
-/** The knobs a run is made of. */
-export interface Knobs {
-  iterations: number;
-  subSteps: number;
-  /** Steps per second: fixedTimeStep is its inverse. */
-  rate: number;
-}
-
-/** The presets of the knobs. */
-export const PRESETS: Readonly<Record<'fast' | 'default' | 'accurate', Knobs>> = {
-  fast: { iterations: 4, subSteps: 1, rate: 30 },
-  default: { iterations: 10, subSteps: 1, rate: 60 },
-  accurate: { iterations: 20, subSteps: 8, rate: 120 },
-};
-export type PresetName = keyof typeof PRESETS;
+/** The presets of the knobs: `presets` of @physin/engine (balanced = the defaults). */
+export const PRESETS: Readonly<Record<PresetName, Readonly<Knobs>>> = CORE_PRESETS;
 
 /** The time steps offered (as rates, Hz): fixedTimeStep 1/30 … 1/240. */
 export const RATES = { '1/30 s': 30, '1/60 s': 60, '1/120 s': 120, '1/240 s': 240 } as const;
 
-/** The engine's parameters for a set of knobs. Sleep is off: a sleeping body would hide its error. */
-export function paramsOf(knobs: Knobs): Partial<Params> {
-  return { iterations: knobs.iterations, subSteps: knobs.subSteps, fixedTimeStep: 1 / knobs.rate, allowSleep: false };
-}
-
 /** The scenes of the page, by name. */
-export const SCENES = {
-  'chain of 10': (p: Partial<Params>) => chain(p, 1),
-  'chain 1000:1': (p: Partial<Params>) => chain(p, 1000),
-  'stack of 10': (p: Partial<Params>) => stack(p, 3, 10),
-  '4D stack of 6': (p: Partial<Params>) => stack(p, 4, 6),
-} as const;
-export type SceneName = keyof typeof SCENES;
+export const SCENES = Object.fromEntries(
+  (Object.keys(CORE_SCENES) as SceneName[]).map((name) => [
+    name,
+    (p: Partial<Params>): TradeScene => withOutline(CORE_SCENES[name](p)),
+  ]),
+) as Record<SceneName, (p: Partial<Params>) => TradeScene>;
 
-function gravity(n: number): number[] {
-  const g = new Array<number>(n).fill(0);
-  g[1] = -9.81;
-  return g;
+/** A scene of trade-core.mjs with the view's outline. */
+export function withOutline(scene: CoreScene): TradeScene {
+  const view = scene.view;
+  let outline: TradeScene['outline'];
+  if (view.kind === 'boxes') {
+    const D = dims(view.n);
+    const local = new Float64Array(view.n);
+    const out = new Float64Array(view.n);
+    outline = () => ({ bodies: view.boxes.map((b) => boxOutline(D, b, view.half, local, out)), links: [] });
+  } else {
+    outline = () => {
+      const segments = [0, 0];
+      for (const l of view.links) segments.push(l.x[0]!, l.x[1]!, l.x[0]!, l.x[1]!);
+      segments.length -= 2;
+      return {
+        bodies: view.links.map((l, i) => ({
+          kind: 'disc' as const,
+          x: l.x[0]!,
+          y: l.x[1]!,
+          r: i === view.links.length - 1 && view.heavy ? 0.3 : 0.1,
+        })),
+        links: segments,
+      };
+    };
+  }
+  return { world: scene.world, unit: scene.unit, error: () => scene.error(), outline, frame: scene.frame };
 }
 
 /** The corners of a box (half extents `half`) of body `b`, projected on x-y, as a convex polygon. */
@@ -98,80 +100,4 @@ function hull(pts: [number, number][]): number[] {
     upper.push(p);
   }
   return [...lower.slice(0, -1), ...upper.slice(0, -1)].flat();
-}
-
-/** `count` unit (hyper)boxes stacked on the ground in n dimensions. */
-function stack(params: Partial<Params>, n: 3 | 4, count: number): TradeScene {
-  const D = dims(n);
-  const world = new World({ dimensions: n, gravity: gravity(n), params });
-  const up = new Array<number>(n).fill(0);
-  up[1] = 1;
-  world.addBody(new Body(D, { shape: HalfSpace(D, up, 0), mass: 0 }));
-  const half = new Array<number>(n).fill(0.5);
-  const boxes: Body[] = [];
-  const starts: Float64Array[] = [];
-  for (let i = 0; i < count; i += 1) {
-    const position = new Array<number>(n).fill(0);
-    position[1] = 0.5 + i;
-    const box = world.addBody(new Body(D, { shape: HyperBox(D, half), mass: 1, position, material: { friction: 0.6 } }));
-    boxes.push(box);
-    starts.push(Float64Array.from(box.x));
-  }
-  const local = new Float64Array(n);
-  const out = new Float64Array(n);
-  return {
-    world,
-    error: () => {
-      let worst = 0;
-      for (let b = 0; b < boxes.length; b += 1) {
-        const x = boxes[b]!.x;
-        const s = starts[b]!;
-        let d2 = 0;
-        for (let i = 0; i < n; i += 1) d2 += (x[i]! - s[i]!) ** 2;
-        worst = Math.max(worst, Math.sqrt(d2));
-      }
-      return worst;
-    },
-    outline: () => ({ bodies: boxes.map((b) => boxOutline(D, b, half, local, out)), links: [] }),
-    frame: [-4, 4, -0.6, count + 0.6],
-  };
-}
-
-/** The specification's chain of 10, starting horizontal; the last link weighs `ratio` kg. */
-function chain(params: Partial<Params>, ratio: number): TradeScene {
-  const D = dims(3);
-  const world = new World({ dimensions: 3, gravity: gravity(3), params });
-  const shape = HyperSphere(D, 0.1);
-  const links: Body[] = [];
-  const joints: PointJoint[] = [];
-  for (let i = 0; i < 10; i += 1) {
-    const link = world.addBody(new Body(D, { shape, mass: i === 9 ? ratio : 1, position: [i + 0.5, 0, 0] }));
-    const previous = links[i - 1];
-    joints.push(
-      world.addConstraint(
-        previous === undefined
-          ? new PointJoint(link, null, [-0.5, 0, 0], [0, 0, 0])
-          : new PointJoint(previous, link, [0.5, 0, 0], [-0.5, 0, 0]),
-      ),
-    );
-    links.push(link);
-  }
-  return {
-    world,
-    error: () => {
-      let worst = 0;
-      for (const j of joints) worst = Math.max(worst, j.error());
-      return worst;
-    },
-    outline: () => {
-      const segments = [0, 0];
-      for (const l of links) segments.push(l.x[0]!, l.x[1]!, l.x[0]!, l.x[1]!);
-      segments.length -= 2;
-      return {
-        bodies: links.map((l, i) => ({ kind: 'disc', x: l.x[0]!, y: l.x[1]!, r: i === 9 && ratio > 1 ? 0.3 : 0.1 })),
-        links: segments,
-      };
-    },
-    frame: [-10.5, 10.5, -10.8, 1],
-  };
 }

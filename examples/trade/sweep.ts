@@ -1,21 +1,24 @@
 /**
- * One run of the trade page: a scene stepped for a number of simulated seconds, a few steps at a
- * time, recording after every step its error and the milliseconds `world.step` took
- * (performance.now around the call). The same code runs in the page or in its worker
- * (sweep-worker.ts).
+ * One run of the trade page: trade-core.mjs's `Run` (the code bench/trade.bench.mjs sweeps for
+ * docs/trade.md) stepping a scene for a number of simulated seconds, a few steps at a time,
+ * recording after every step its error and the milliseconds `world.step` took; this file adds
+ * what the view needs. The same code runs in the page or in its worker (sweep-worker.ts).
  */
-import { SCENES, paramsOf } from './scenes.js';
+import { Run, warmUp } from './trade-core.mjs';
+import { withOutline } from './scenes.js';
 import type { Knobs, Outline, SceneName, TradeScene } from './scenes.js';
+
+export { warmUp };
 
 /** What a run has measured so far (plain data: the worker posts it). */
 export interface Progress {
   /** Simulated time after each step (s). */
   readonly times: number[];
-  /** The scene's error after each step (m). */
+  /** The scene's error after each step (m, or rad for the spinning body). */
   readonly errors: number[];
   /** Milliseconds each step took. */
   readonly costs: number[];
-  /** Largest error so far (m). */
+  /** Largest error so far. */
   worst: number;
   /** Mean milliseconds per step. */
   msPerStep: number;
@@ -32,44 +35,25 @@ export interface Progress {
   failure: string | null;
 }
 
-let warm = false;
-
-/**
- * Steps every scene a little, once per thread, before the first measured run: otherwise the first
- * run would also pay for compiling the engine's code, and look dearer than it is.
- */
-export function warmUp(): void {
-  if (warm) return;
-  warm = true;
-  for (const build of Object.values(SCENES)) {
-    const scene = build(paramsOf({ iterations: 10, subSteps: 2, rate: 60 }));
-    for (let i = 0; i < 120; i += 1) scene.world.step();
-    scene.error();
-    scene.outline();
-  }
-}
-
 export class Sweep {
   readonly progress: Progress;
+  private readonly run: Run;
   private readonly scene: TradeScene;
-  private readonly rate: number;
-  private steps = 0;
-  private ms = 0;
 
   constructor(name: SceneName, knobs: Knobs, seconds: number) {
     warmUp();
-    this.scene = SCENES[name](paramsOf(knobs));
-    this.rate = knobs.rate;
+    this.run = new Run(name, knobs, seconds);
+    this.scene = withOutline(this.run.scene);
     const { bodies, links } = this.scene.outline();
     this.progress = {
-      times: [],
-      errors: [],
-      costs: [],
+      times: this.run.times,
+      errors: this.run.errors,
+      costs: this.run.costs,
       worst: 0,
       msPerStep: 0,
       msPerSecond: 0,
-      total: Math.round(seconds * knobs.rate),
-      done: false,
+      total: this.run.total,
+      done: this.run.done,
       bodies,
       links,
       frame: this.scene.frame,
@@ -81,32 +65,15 @@ export class Sweep {
   advance(budgetMs: number): Progress {
     const p = this.progress;
     if (p.done) return p;
-    const until = performance.now() + budgetMs;
-    const world = this.scene.world;
-    do {
-      if (this.steps >= p.total) break;
-      const t0 = performance.now();
-      try {
-        world.step();
-      } catch (e) {
-        p.failure = e instanceof Error ? e.message : String(e);
-        p.done = true;
-        break;
-      }
-      const dt = performance.now() - t0;
-      this.ms += dt;
-      this.steps += 1;
-      const error = this.scene.error();
-      p.times.push(this.steps / this.rate);
-      p.errors.push(error);
-      p.costs.push(dt);
-      if (error > p.worst || !Number.isFinite(error)) p.worst = Number.isFinite(error) ? error : Infinity;
-    } while (performance.now() < until);
-    if (this.steps > 0) {
-      p.msPerStep = this.ms / this.steps;
-      p.msPerSecond = this.ms / (this.steps / this.rate);
+    const run = this.run;
+    run.advance(budgetMs);
+    p.worst = run.worst;
+    p.failure = run.failure;
+    p.done = run.done;
+    if (run.steps > 0) {
+      p.msPerStep = run.ms / run.steps;
+      p.msPerSecond = run.msPerSecond;
     }
-    if (this.steps >= p.total) p.done = true;
     const { bodies, links } = this.scene.outline();
     p.bodies = bodies;
     p.links = links;

@@ -12,16 +12,16 @@ import { PRESETS, Run, SCENES, knobsOf } from '../examples/trade/trade-core.mjs'
 import type { PresetName, SceneName } from '../examples/trade/trade-core.mjs';
 
 /** The seconds each scene runs (as in the bench). */
-const SECONDS = 4;
+const SECONDS = 10;
 
 /** The bounds of docs/trade.md (m for the boxes and joints, rad for the spinning body). */
 const BOUNDS: Record<SceneName, Record<PresetName, number>> = {
   'stack of 9': { fast: 0.0064, balanced: 0.0018, accurate: 1.8e-5 },
-  pyramid: { fast: 9.7e-4, balanced: 6.0e-5, accurate: 7.3e-7 },
-  'chain of 10': { fast: 5.8e-7, balanced: 7.3e-9, accurate: 1e-12 },
+  pyramid: { fast: 9.7e-4, balanced: 6.0e-5, accurate: 1.2e-6 },
+  'chain of 10': { fast: 5.8e-7, balanced: 3.7e-6, accurate: 1e-12 },
   'chain 1000:1': { fast: 7.1e-6, balanced: 5.4e-11, accurate: 1e-12 },
   '4D stack of 6': { fast: 3.7e-3, balanced: 4.8e-4, accurate: 7.0e-6 },
-  'spinning body': { fast: 5.3e-3, balanced: 1.4e-3, accurate: 2.1e-5 },
+  'spinning body': { fast: 0.013, balanced: 3.3e-3, accurate: 5.0e-5 },
 };
 
 describe('presets', () => {
@@ -54,28 +54,20 @@ describe('presets', () => {
   });
 
   for (const scene of Object.keys(BOUNDS) as SceneName[]) {
-    it(`hold their error bounds on ${scene} for ${SECONDS} s`, () => {
+    it(`hold their error bounds on ${scene} for ${SECONDS} s, accurate the best`, () => {
       expect(SCENES[scene]).toBeTypeOf('function');
+      const worst: Partial<Record<PresetName, number>> = {};
       for (const preset of ['fast', 'balanced', 'accurate'] as const) {
         const run = new Run(scene, PRESETS[preset], SECONDS);
         run.advance(Infinity);
         expect(run.failure, `${scene} ${preset}`).toBeNull();
         expect(run.steps).toBe(SECONDS * PRESETS[preset].rate);
         expect(run.worst, `${scene} ${preset}`).toBeLessThanOrEqual(BOUNDS[scene][preset]);
+        worst[preset] = run.worst;
       }
+      // Not balanced ≤ fast everywhere: over 10 s the whipping chain's worst gap is 2.4e-6 m at the
+      // defaults and 3.9e-7 m at fast (docs/trade.md).
+      expect(worst.accurate).toBeLessThanOrEqual(Math.min(worst.balanced!, worst.fast!));
     });
   }
-
-  it('are ordered: on every scene accurate ≤ balanced ≤ fast in worst error', () => {
-    for (const scene of Object.keys(BOUNDS) as SceneName[]) {
-      const worst = (p: PresetName): number => {
-        const run = new Run(scene, PRESETS[p], 2);
-        run.advance(Infinity);
-        return run.worst;
-      };
-      const [f, b, a] = [worst('fast'), worst('balanced'), worst('accurate')];
-      expect(a, scene).toBeLessThanOrEqual(b);
-      expect(b, scene).toBeLessThanOrEqual(f);
-    }
-  });
 });

@@ -241,7 +241,7 @@ export function drawTrade(canvas: HTMLCanvasElement, runs: readonly PlotRun[]): 
   for (let e = Math.ceil(lo); e <= hi; e += 1) if (e % every === 0) decades.push(e);
   yGrid(f, decades, y, (e) => (e <= LOG_FLOOR ? '0' : `1e${e}`));
   xGrid(f, xt, x, (v) => `${v}`);
-  title(f, 'worst error (m; rad for the spinning body) against cost', 'ms per simulated s');
+  title(f, 'worst error against cost', 'ms per simulated s');
   eachRun(ctx, shown, ({ colour, progress: p }, newest) => {
     const front =
       p.done && shown.every(({ progress: o }) => o === p || !o.done || o.msPerSecond > p.msPerSecond || o.worst > p.worst);

@@ -204,6 +204,10 @@ md.push('');
 for (const [name, k] of Object.entries(PRESETS)) md.push(`- \`${name}\`: ${knobText(k)}`);
 md.push('');
 md.push(
+  'How they were chosen. On every scene the error follows the sub-step (dt / sub-steps) first: 4 × 2 × 1/120 s and 4 × 4 × 1/60 s give the same error at the same cost. Iterations count only on the contact scenes, the pyramid most (4 iterations leave it 6 times the error of 10 at the smallest sub-step); the chains (solved directly as a tree) and the free body ignore them. `fast` is the cheapest point of every front. `balanced` is the defaults, unchanged; on the stacks it sits within the cost noise of the front (10 × 2 × 1/30 s has the same sub-step and error). `accurate` keeps the default iterations and takes a sub-step of 1/480 s, on or within a few per cent of the front on the contact scenes. Whether a point counts as on the front depends on costs measured on a shared machine, a few per cent apart; the errors are exact (the same bits on every run).',
+);
+md.push('');
+md.push(
   'Measured error and cost of each preset per scene, and the bound tests/engine-presets.test.ts holds (the measured error × 1.5 rounded up to two digits, and at least 1e-12, the round-off of these sums):',
 );
 md.push('');

@@ -1,6 +1,6 @@
 // The trade between accuracy and cost (issue 17): sweeps iterations × sub-steps × time step over
 // the scenes of examples/trade/trade-core.mjs (the code the examples site's trade page runs), with
-// Rapier and cannon-es on the 3D box scenes, and writes docs/trade.md and docs/images/trade-*.svg.
+// Rapier and cannon-es on the 3D box scenes and the whipping chain, and writes docs/trade.md and docs/images/trade-*.svg.
 //
 // Error: each scene's own measure, the worst over the run (bit-identical from run to run). Cost:
 // milliseconds of `step` per simulated second, the median of RUNS runs; every round runs every
@@ -14,6 +14,7 @@ import { fileURLToPath } from 'node:url';
 import { FRICTION, GRID, PEER_SCENES, PRESETS, Run, SCENES, paretoFront, warmUp } from '../examples/trade/trade-core.mjs';
 import { medianTable } from './lib/table.mjs';
 import { loadCannon, loadRapier } from './scenes/peer-scenes.mjs';
+import { cannonChain, rapierChain } from './scenes/joint-scenes.mjs';
 
 const SECONDS = 10;
 const RUNS = 3;
@@ -104,8 +105,8 @@ function cannonScene(CANNON, centres, { iterations, rate }) {
 }
 
 /** One run of a peer: worst error and ms per simulated second. */
-function runPeer(build, lib, centres, knobs) {
-  const scene = build(lib, centres, knobs);
+function runPeer(make, knobs) {
+  const scene = make(knobs);
   const total = Math.round(SECONDS * knobs.rate);
   let ms = 0;
   let worst = 0;
@@ -132,17 +133,41 @@ for (const scene of Object.keys(SCENES)) {
 }
 const RAPIER = await loadRapier();
 const CANNON = await loadCannon();
+// The whipping chain is the joint benchmark's chain (bench/scenes/joint-scenes.mjs: the same
+// links, anchors and start; the error is the largest gap a joint opens), at each peer's default
+// iterations: those scenes do not take other counts.
+const chainOf = (build, lib) => (knobs) => build(lib, { dt: 1 / knobs.rate });
 const PEERS = [
-  { engine: 'Rapier', build: rapierScene, lib: RAPIER, iterations: [4, 8], defaults: { iterations: 4, rate: 60 } },
-  { engine: 'cannon-es', build: cannonScene, lib: CANNON, iterations: [10, 20], defaults: { iterations: 10, rate: 60 } },
+  {
+    engine: 'Rapier',
+    build: rapierScene,
+    lib: RAPIER,
+    iterations: [4, 8],
+    defaults: { iterations: 4, rate: 60 },
+    chain: chainOf(rapierChain, RAPIER),
+  },
+  {
+    engine: 'cannon-es',
+    build: cannonScene,
+    lib: CANNON,
+    iterations: [10, 20],
+    defaults: { iterations: 10, rate: 60 },
+    chain: chainOf(cannonChain, CANNON),
+  },
 ];
-for (const scene of Object.keys(PEER_SCENES)) {
-  for (const peer of PEERS) {
+const PEER_CHAIN = 'chain of 10';
+for (const peer of PEERS) {
+  for (const scene of Object.keys(PEER_SCENES)) {
+    const make = (knobs) => peer.build(peer.lib, PEER_SCENES[scene](), knobs);
     for (const iterations of peer.iterations) {
       for (const rate of GRID.rate) {
-        configs.push({ engine: peer.engine, peer, scene, knobs: { iterations, subSteps: 1, rate }, costs: [] });
+        configs.push({ engine: peer.engine, peer, scene, make, knobs: { iterations, subSteps: 1, rate }, costs: [] });
       }
     }
+  }
+  for (const rate of GRID.rate) {
+    const knobs = { iterations: peer.defaults.iterations, subSteps: 1, rate };
+    configs.push({ engine: peer.engine, peer, scene: PEER_CHAIN, make: peer.chain, knobs, costs: [] });
   }
 }
 
@@ -150,8 +175,7 @@ for (const scene of Object.keys(PEER_SCENES)) {
 
 const started = performance.now();
 warmUp();
-for (const peer of PEERS)
-  for (const scene of Object.keys(PEER_SCENES)) runPeer(peer.build, peer.lib, PEER_SCENES[scene](), { iterations: 4, rate: 60 });
+for (const c of configs) if (c.engine !== 'PhysiN' && c.knobs.rate === 60) runPeer(c.make, c.knobs);
 for (let round = 0; round < RUNS; round += 1) {
   for (const c of configs) {
     if (c.engine === 'PhysiN') {
@@ -161,7 +185,7 @@ for (let round = 0; round < RUNS; round += 1) {
       c.failure = run.failure;
       c.costs.push(run.msPerSecond);
     } else {
-      const r = runPeer(c.peer.build, c.peer.lib, PEER_SCENES[c.scene](), c.knobs);
+      const r = runPeer(c.make, c.knobs);
       c.worst = r.worst;
       c.costs.push(r.msPerSecond);
     }
@@ -188,7 +212,7 @@ md.push('');
 md.push('_Written by `bench/trade.bench.mjs` (`pnpm bench:trade` in bench/, after a build); do not edit by hand._');
 md.push('');
 md.push(
-  `Each scene of \`examples/trade/trade-core.mjs\` (the code the examples site's trade page runs) is stepped for ${SECONDS} simulated seconds at every point of the grid iterations ${GRID.iterations.join(', ')} × sub-steps ${GRID.subSteps.join(', ')} × time step ${GRID.rate.map(dtName).join(', ')} s. **Error** is the scene's own measure, the worst over the run: for the box scenes the largest drift of a box from where it started (m), for the chains the largest gap a joint opens (m), for the spinning body the distance of its rotor from a reference run at 240 Hz × 16 sub-steps (≈ half the angle error, rad). **Cost** is the median over ${RUNS} runs of the milliseconds \`world.step\` took per simulated second (one thread of the machine below). Rapier ${'0.21.0'} and cannon-es 0.20.0 run the 3D box scenes in the same run, with the same boxes, friction ${FRICTION} and error measure, at their default iterations and twice that, over the same time steps (they have no sub-steps); every round runs every configuration once, so a drift of the machine's speed falls on all alike.`,
+  `Each scene of \`examples/trade/trade-core.mjs\` (the code the examples site's trade page runs) is stepped for ${SECONDS} simulated seconds at every point of the grid iterations ${GRID.iterations.join(', ')} × sub-steps ${GRID.subSteps.join(', ')} × time step ${GRID.rate.map(dtName).join(', ')} s. **Error** is the scene's own measure, the worst over the run: for the box scenes the largest drift of a box from where it started (m), for the chains the largest gap a joint opens (m), for the spinning body the distance of its rotor from a reference run at 240 Hz × 16 sub-steps (≈ half the angle error, rad). **Cost** is the median over ${RUNS} runs of the milliseconds \`world.step\` took per simulated second (one thread of the machine below). Rapier ${'0.21.0'} and cannon-es 0.20.0 run the 3D box scenes in the same run, with the same boxes, friction ${FRICTION} and error measure, at their default iterations and twice that, and the whipping chain (the joint benchmark's chain: the same links, anchors and start) at their default iterations, over the same time steps (they have no sub-steps); the 1000:1 chain, the 4D stack and the spinning body have no peer. Every round runs every configuration once, so a drift of the machine's speed falls on all alike.`,
 );
 md.push('');
 md.push(

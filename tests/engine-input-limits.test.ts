@@ -641,3 +641,14 @@ describe('seeded fuzzing: 2,000 calls with extreme values either throw before ch
     });
   }
 });
+
+describe('world gravity', () => {
+  it('refuses a gravity beyond the acceleration bound, at new World and setGravity, before anything changes', () => {
+    const bound = Body.limits.maxAcceleration;
+    expect(() => new World({ dimensions: 3, gravity: [0, -bound * 1.0000001, 0] })).toThrow(/'gravity'\[1\] must be within/);
+    const world = new World({ dimensions: 4, gravity: [0, -bound, 0, 0] });
+    expect(() => world.setGravity([0, 0, 0, 1e308])).toThrow(RangeError);
+    expect(() => world.setGravity([0, 0, 0, 1e308])).toThrow(/'g'\[3\]/);
+    expect([...world.gravity]).toEqual([0, -bound, 0, 0]);
+  });
+});

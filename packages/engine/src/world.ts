@@ -46,6 +46,7 @@ import { integrateVelocities } from './integrator/velocities.js';
 import type { Joint, JointOwner } from './joints/joint.js';
 import type { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams, scaledParams } from './params.js';
+import { inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
 
@@ -135,6 +136,20 @@ function robustNormInto(out: Float64Array, slot: number, a: Float64Array): void 
 const JOINT_POSITION_ITERATIONS = 3;
 
 const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
+
+/**
+ * Checks a gravity vector: n finite numbers, each within the acceleration bound of
+ * `Body.limits` (a larger gravity would overflow the next step's velocities).
+ */
+function checkGravity(D: Dims, name: string, g: unknown, fn: string): void {
+  checkVector(D, name, g, fn);
+  const bound = inputLimits.maxAcceleration;
+  const v = g as ArrayLike<number>;
+  for (let i = 0; i < D.n; i += 1) {
+    if (!(Math.abs(v[i]!) <= bound))
+      throw new RangeError(`${fn}: argument '${name}'[${i}] must be within ±${bound} m/s² (Body.limits), got ${v[i]}`);
+  }
+}
 
 /** Whether `value` is a joint (the world does not import the Joint class: see Joint.createSolver). */
 function isJoint(value: unknown): value is Joint {
@@ -260,7 +275,7 @@ export class WorldBase {
     }
     checkInteger('dimensions', options.dimensions, MIN_DIMENSION, MAX_DIMENSION, fn);
     const D = tables(options.dimensions);
-    if (options.gravity !== undefined) checkVector(D, 'gravity', options.gravity, fn);
+    if (options.gravity !== undefined) checkGravity(D, 'gravity', options.gravity, fn);
     const params = mergeParams(defaultParams, options.params, fn);
     this.D = D;
     this.n = D.n;
@@ -345,7 +360,7 @@ export class WorldBase {
 
   /** Sets gravity (m/s², n finite numbers). */
   setGravity(g: ArrayLike<number>): this {
-    checkVector(this.D, 'g', g, 'World.setGravity');
+    checkGravity(this.D, 'g', g, 'World.setGravity');
     this.gravityValue.set(g);
     return this;
   }

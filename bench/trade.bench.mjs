@@ -1,6 +1,6 @@
 // The trade between accuracy and cost (issue 17): sweeps iterations × sub-steps × time step over
 // the scenes of examples/trade/trade-core.mjs (the code the examples site's trade page runs), with
-// Rapier and cannon-es on the 3D box scenes and the whipping chain, and writes docs/trade.md and docs/images/trade-*.svg.
+// Rapier and cannon-es on the 3D box scenes and the chains, and writes docs/trade.md and docs/images/trade-*.svg.
 //
 // Error: each scene's own measure, the worst over the run (bit-identical from run to run). Cost:
 // milliseconds of `step` per simulated second, the median of RUNS runs; every round runs every
@@ -133,10 +133,10 @@ for (const scene of Object.keys(SCENES)) {
 }
 const RAPIER = await loadRapier();
 const CANNON = await loadCannon();
-// The whipping chain is the joint benchmark's chain (bench/scenes/joint-scenes.mjs: the same
+// The chains are the joint benchmark's chain (bench/scenes/joint-scenes.mjs: the same
 // links, anchors and start; the error is the largest gap a joint opens), at each peer's default
 // iterations: those scenes do not take other counts.
-const chainOf = (build, lib) => (knobs) => build(lib, { dt: 1 / knobs.rate });
+const chainOf = (build, lib, ratio) => (knobs) => build(lib, { dt: 1 / knobs.rate, ratio });
 const PEERS = [
   {
     engine: 'Rapier',
@@ -144,7 +144,7 @@ const PEERS = [
     lib: RAPIER,
     iterations: [4, 8],
     defaults: { iterations: 4, rate: 60 },
-    chain: chainOf(rapierChain, RAPIER),
+    chains: { 'chain of 10': chainOf(rapierChain, RAPIER, 1), 'chain 1000:1': chainOf(rapierChain, RAPIER, 1000) },
   },
   {
     engine: 'cannon-es',
@@ -152,10 +152,9 @@ const PEERS = [
     lib: CANNON,
     iterations: [10, 20],
     defaults: { iterations: 10, rate: 60 },
-    chain: chainOf(cannonChain, CANNON),
+    chains: { 'chain of 10': chainOf(cannonChain, CANNON, 1), 'chain 1000:1': chainOf(cannonChain, CANNON, 1000) },
   },
 ];
-const PEER_CHAIN = 'chain of 10';
 for (const peer of PEERS) {
   for (const scene of Object.keys(PEER_SCENES)) {
     const make = (knobs) => peer.build(peer.lib, PEER_SCENES[scene](), knobs);
@@ -165,9 +164,11 @@ for (const peer of PEERS) {
       }
     }
   }
-  for (const rate of GRID.rate) {
-    const knobs = { iterations: peer.defaults.iterations, subSteps: 1, rate };
-    configs.push({ engine: peer.engine, peer, scene: PEER_CHAIN, make: peer.chain, knobs, costs: [] });
+  for (const [scene, make] of Object.entries(peer.chains)) {
+    for (const rate of GRID.rate) {
+      const knobs = { iterations: peer.defaults.iterations, subSteps: 1, rate };
+      configs.push({ engine: peer.engine, peer, scene, make, knobs, costs: [] });
+    }
   }
 }
 
@@ -212,7 +213,7 @@ md.push('');
 md.push('_Written by `bench/trade.bench.mjs` (`pnpm bench:trade` in bench/, after a build); do not edit by hand._');
 md.push('');
 md.push(
-  `Each scene of \`examples/trade/trade-core.mjs\` (the code the examples site's trade page runs) is stepped for ${SECONDS} simulated seconds at every point of the grid iterations ${GRID.iterations.join(', ')} × sub-steps ${GRID.subSteps.join(', ')} × time step ${GRID.rate.map(dtName).join(', ')} s. **Error** is the scene's own measure, the worst over the run: for the box scenes the largest drift of a box from where it started (m), for the chains the largest gap a joint opens (m), for the spinning body the distance of its rotor from a reference run at 240 Hz × 16 sub-steps (≈ half the angle error, rad). **Cost** is the median over ${RUNS} runs of the milliseconds \`world.step\` took per simulated second (one thread of the machine below). Rapier ${'0.21.0'} and cannon-es 0.20.0 run the 3D box scenes in the same run, with the same boxes, friction ${FRICTION} and error measure, at their default iterations and twice that, and the whipping chain (the joint benchmark's chain: the same links, anchors and start) at their default iterations, over the same time steps (they have no sub-steps); the 1000:1 chain, the 4D stack and the spinning body have no peer. Every round runs every configuration once, so a drift of the machine's speed falls on all alike.`,
+  `Each scene of \`examples/trade/trade-core.mjs\` (the code the examples site's trade page runs) is stepped for ${SECONDS} simulated seconds at every point of the grid iterations ${GRID.iterations.join(', ')} × sub-steps ${GRID.subSteps.join(', ')} × time step ${GRID.rate.map(dtName).join(', ')} s. **Error** is the scene's own measure, the worst over the run: for the box scenes the largest drift of a box from where it started (m), for the chains the largest gap a joint opens (m), for the spinning body the distance of its rotor from a reference run at 240 Hz × 16 sub-steps (≈ half the angle error, rad). **Cost** is the median over ${RUNS} runs of the milliseconds \`world.step\` took per simulated second (one thread of the machine below). Rapier ${'0.21.0'} and cannon-es 0.20.0 run the 3D box scenes in the same run, with the same boxes, friction ${FRICTION} and error measure, at their default iterations and twice that, and the two chains (the joint benchmark's chain: the same links, anchors and start; the last link 1 or 1000 kg) at their default iterations, over the same time steps (they have no sub-steps); the 4D stack has no peer, and the spinning body is measured against PhysiN's own fine run, so peers are not placed on it. Every round runs every configuration once, so a drift of the machine's speed falls on all alike.`,
 );
 md.push('');
 md.push(

@@ -186,11 +186,11 @@ function rapierScene(RAPIER, dt, positions, shapeDesc, list, rotation, radius) {
   const world = new RAPIER.World({ x: 0, y: -GRAVITY, z: 0 });
   world.timestep = dt;
   const ground = world.createRigidBody(RAPIER.RigidBodyDesc.fixed());
-  const bodies = positions.map(([x, y, z]) => {
+  const bodies = positions.map(([x, y, z], i) => {
     const desc = RAPIER.RigidBodyDesc.dynamic().setTranslation(x, y, z).setCanSleep(false);
     if (rotation) desc.setRotation(rotation);
     const body = world.createRigidBody(desc);
-    world.createCollider(shapeDesc(), body);
+    world.createCollider(shapeDesc(i), body);
     return body;
   });
   const vec = (a) => ({ x: a[0], y: a[1], z: a[2] });
@@ -223,15 +223,15 @@ function rapierScene(RAPIER, dt, positions, shapeDesc, list, rotation, radius) {
   return { step: () => world.step(), error: () => peerError(list, pose), energy, dispose: () => world.free() };
 }
 
-/** The chain in Rapier. */
-export function rapierChain(RAPIER, { count = 10, start = 'horizontal', dt = 1 / 60 } = {}) {
+/** The chain in Rapier; the last link weighs `ratio` kg (the others 1 kg). */
+export function rapierChain(RAPIER, { count = 10, start = 'horizontal', dt = 1 / 60, ratio = 1 } = {}) {
   const volume = (4 / 3) * Math.PI * LINK_RADIUS ** 3;
   const rotation = start === 'hanging' ? { w: Math.cos(-Math.PI / 4), x: 0, y: 0, z: Math.sin(-Math.PI / 4) } : null;
   return rapierScene(
     RAPIER,
     dt,
     chainStarts(count, 3, start),
-    () => RAPIER.ColliderDesc.ball(LINK_RADIUS).setDensity(1 / volume),
+    (i) => RAPIER.ColliderDesc.ball(LINK_RADIUS).setDensity((i === count - 1 ? ratio : 1) / volume),
     chainJoints(count, 3),
     rotation,
     LINK_RADIUS,
@@ -255,7 +255,7 @@ export function rapierGrid(RAPIER, { side = 20, dt = 1 / 60 } = {}) {
 }
 
 /** A cannon-es scene: GSSolver 10 iterations, NaiveBroadphase replaced by SAP, PointToPointConstraint (collideConnected false). */
-function cannonScene(CANNON, dt, positions, makeShape, list, quaternion) {
+function cannonScene(CANNON, dt, positions, makeShape, list, quaternion, masses = null) {
   const world = new CANNON.World({ gravity: new CANNON.Vec3(0, -GRAVITY, 0), allowSleep: false });
   world.broadphase = new CANNON.SAPBroadphase(world);
   const solver = new CANNON.GSSolver();
@@ -264,8 +264,8 @@ function cannonScene(CANNON, dt, positions, makeShape, list, quaternion) {
   const ground = new CANNON.Body({ mass: 0, type: CANNON.Body.STATIC });
   world.addBody(ground);
   const shape = makeShape();
-  const bodies = positions.map(([x, y, z]) => {
-    const body = new CANNON.Body({ mass: 1, shape, position: new CANNON.Vec3(x, y, z), allowSleep: false });
+  const bodies = positions.map(([x, y, z], i) => {
+    const body = new CANNON.Body({ mass: masses?.[i] ?? 1, shape, position: new CANNON.Vec3(x, y, z), allowSleep: false });
     if (quaternion) body.quaternion.set(quaternion.x, quaternion.y, quaternion.z, quaternion.w);
     world.addBody(body);
     return body;
@@ -295,10 +295,19 @@ function cannonScene(CANNON, dt, positions, makeShape, list, quaternion) {
   return { step: () => world.step(dt), error: () => peerError(list, pose), energy, dispose: () => {} };
 }
 
-/** The chain in cannon-es. */
-export function cannonChain(CANNON, { count = 10, start = 'horizontal', dt = 1 / 60 } = {}) {
+/** The chain in cannon-es; the last link weighs `ratio` kg (the others 1 kg). */
+export function cannonChain(CANNON, { count = 10, start = 'horizontal', dt = 1 / 60, ratio = 1 } = {}) {
   const q = start === 'hanging' ? { w: Math.cos(-Math.PI / 4), x: 0, y: 0, z: Math.sin(-Math.PI / 4) } : null;
-  return cannonScene(CANNON, dt, chainStarts(count, 3, start), () => new CANNON.Sphere(LINK_RADIUS), chainJoints(count, 3), q);
+  const masses = Array.from({ length: count }, (_, i) => (i === count - 1 ? ratio : 1));
+  return cannonScene(
+    CANNON,
+    dt,
+    chainStarts(count, 3, start),
+    () => new CANNON.Sphere(LINK_RADIUS),
+    chainJoints(count, 3),
+    q,
+    masses,
+  );
 }
 
 /** The joint grid in cannon-es. */

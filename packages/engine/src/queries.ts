@@ -10,7 +10,8 @@ import type { Body } from './body.js';
 import { createIdList, createRayCastResult, queryOverlap, rayCastClosest } from './collision/query.js';
 import type { RayCastSource } from './collision/query.js';
 import type { QueryShape } from './collision/query-shapes.js';
-import { WorldBase } from './world.js';
+import { checkWorld } from './world.js';
+import type { WorldBase } from './world.js';
 
 /** The first hit of {@link castRay}. */
 export interface WorldRayHit {
@@ -22,12 +23,6 @@ export interface WorldRayHit {
   readonly normal: Float64Array;
   /** Distance from the origin along the normalised direction (m). */
   readonly distance: number;
-}
-
-function checkWorld(fn: string, world: unknown): WorldBase {
-  if (!(world instanceof WorldBase))
-    throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
-  return world;
 }
 
 /**

@@ -46,7 +46,7 @@ import { integrateVelocities } from './integrator/velocities.js';
 import type { Joint, JointOwner } from './joints/joint.js';
 import type { JointSolver } from './joints/joint-solver.js';
 import { defaultParams, mergeParams, scaledParams } from './params.js';
-import { inputLimits } from './shapes/limits.js';
+import { checkComponents, inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
 
@@ -143,12 +143,18 @@ const WORLD_OPTION_NAMES = new Set(['dimensions', 'gravity', 'params']);
  */
 function checkGravity(D: Dims, name: string, g: unknown, fn: string): void {
   checkVector(D, name, g, fn);
-  const bound = inputLimits.maxAcceleration;
-  const v = g as ArrayLike<number>;
-  for (let i = 0; i < D.n; i += 1) {
-    if (!(Math.abs(v[i]!) <= bound))
-      throw new RangeError(`${fn}: argument '${name}'[${i}] must be within ±${bound} m/s² (Body.limits), got ${v[i]}`);
+  checkComponents(fn, `argument '${name}'`, g as ArrayLike<number>, inputLimits.maxAcceleration, 'm/s²');
+}
+
+/**
+ * @internal `world` as a world of either entry, or a TypeError naming the argument: the check of
+ * the functions that take a world (castRay, queryBox, snapshotWorld).
+ */
+export function checkWorld(fn: string, world: unknown): WorldBase {
+  if (!(world instanceof WorldBase)) {
+    throw new TypeError(`${fn}: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
   }
+  return world;
 }
 
 /** Whether `value` is a joint (the world does not import the Joint class: see Joint.createSolver). */
@@ -298,7 +304,7 @@ export class WorldBase {
     this.narrowScratch = createNarrowphaseScratch(D.n, { featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit });
     this.contacts = new ContactSet(D.n);
     this.solverBodies = new SolverBodies(D);
-    this.solver = new ContactSolver(D);
+    this.solver = new ContactSolver(D, this.gravityValue);
     this.events = new ContactEvents(D.n);
     this.collisionEvent = {
       type: 'begin',
@@ -822,8 +828,6 @@ export class WorldBase {
     const reach = this.reach;
     const h = this.constants[STEP_H]!;
     const speeds = this.scratch.speeds;
-    // The solver's speculative rows and restitution read the gravity of this sub-step.
-    this.solver.gravity.set(this.gravityValue);
     for (let b = 0; b < bodies.length; b += 1) {
       const body = bodies[b]!;
       if (body.poseDirty) {

@@ -4,7 +4,8 @@
  *
  * @module
  */
-import { WorldBase } from '../world.js';
+import { checkWorld } from '../world.js';
+import type { WorldBase } from '../world.js';
 import { World } from '../world-nd.js';
 import { readWorldSnapshot } from './read-world.js';
 import { writeWorldSnapshot } from './write-world.js';
@@ -31,9 +32,8 @@ import { writeWorldSnapshot } from './write-world.js';
  *   does not know (it names the kind).
  */
 export function snapshotWorld(world: WorldBase): Uint8Array {
-  if (!(world instanceof WorldBase))
-    throw new TypeError(`snapshotWorld: argument 'world' must be a World, got ${world === null ? 'null' : typeof world}`);
-  return writeWorldSnapshot(world, world.snapshotParts());
+  const w = checkWorld('snapshotWorld', world);
+  return writeWorldSnapshot(w, w.snapshotParts());
 }
 
 /**

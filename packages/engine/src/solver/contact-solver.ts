@@ -149,7 +149,7 @@ export class ContactSolver {
   private readonly rB: Float64Array;
   private readonly centre: Float64Array;
 
-  constructor(D: Dims) {
+  constructor(D: Dims, gravity: Float64Array) {
     this.D = D;
     this.n = D.n;
     this.k = D.k;
@@ -168,13 +168,13 @@ export class ContactSolver {
     this.rA = new Float64Array(D.n);
     this.rB = new Float64Array(D.n);
     this.centre = new Float64Array(D.n);
-    this.gravity = new Float64Array(D.n);
+    this.gravity = gravity;
   }
 
   /**
-   * The world's gravity (n numbers), which the world copies here every sub-step: restitution
-   * reads the relative normal acceleration of a contact (gravity and applied forces) to find the
-   * approach speed at the moment of impact (see `restitution`).
+   * The world's gravity (n numbers): the world's own array, shared, so it is never copied and never
+   * stale. Restitution reads the relative normal acceleration of a contact (gravity and applied
+   * forces) to find the approach speed at the moment of impact (see `restitution`).
    * @internal
    */
   readonly gravity: Float64Array;

@@ -7,6 +7,7 @@
 import { checkDimension, checkNumber, checkOutput, checkPose, checkShape } from './query-checks.js';
 import type {
   BoxGeometry,
+  CapsuleGeometry,
   ConvexMeshGeometry,
   HalfSpaceGeometry,
   QueryShape,
@@ -24,6 +25,7 @@ import { shapeKind } from './shape-kind.js';
  * - torus (core circle radius R in local plane (i, j), tube radius r): R·√(M[k][i]² + M[k][j]²) + r,
  *   the exact extent of the solid torus (the circle's extent plus the ball's);
  * - convex mesh: min and max over its vertices;
+ * - capsule (segment ±h·e₁, radius r): h·|M[k][1]| + r;
  * - half-space: infinite (−∞, +∞) on every axis, except that a plane whose world normal is
  *   exactly a coordinate axis bounds that one axis on its solid side. The broadphase keeps
  *   half-spaces aside and never puts them in its tree.
@@ -129,6 +131,21 @@ export function computeBoundsUnchecked(
       halfSpaceBounds(outMin, outMax, n, shape as HalfSpaceGeometry, x, M, margin);
       return outMin;
     }
+    case 'capsule': {
+      const capsule = shape as CapsuleGeometry;
+      const h = capsule.halfHeight;
+      const e0 = capsule.radius + margin;
+      // The core segment runs along local axis 1: its extent along e_k is h·|M[k][1]|.
+      for (let k = 0; k < n; k += 1) {
+        const e = h * Math.abs(M[k * n + 1]!) + e0;
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    default:
+      // A compound has no bounds of its own: each of its parts is placed as a shape of its own.
+      throw new TypeError(`computeBounds: a '${String(shapeKind(shape))}' shape has no bounds of its own`);
   }
 }
 

@@ -64,3 +64,15 @@ export interface CollisionMesh {
   /** Facet plane offsets (m), one per facet. */
   readonly facetOffsets: ArrayLike<number>;
 }
+
+/**
+ * A solid capsule: the points within `radius` of the segment from −halfHeight·e₁ to
+ * +halfHeight·e₁ (local axis 1, "y", as three.js's CapsuleGeometry and Rapier's capsule).
+ */
+export interface CollisionCapsule {
+  readonly kind: 'capsule';
+  /** Half the length of the core segment (m), > 0. */
+  readonly halfHeight: number;
+  /** Radius of the ball swept along the segment (m), > 0. */
+  readonly radius: number;
+}

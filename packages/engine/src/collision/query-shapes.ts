@@ -65,5 +65,17 @@ export interface ConvexMeshGeometry {
   readonly facetOffsets: ArrayLike<number>;
 }
 
+/**
+ * A solid capsule: the points within `radius` of the segment from −halfHeight·e₁ to
+ * +halfHeight·e₁ (local axis 1).
+ */
+export interface CapsuleGeometry {
+  readonly kind: 'capsule';
+  /** Half the length of the core segment (m), > 0. */
+  readonly halfHeight: number;
+  /** Radius (m), > 0. */
+  readonly radius: number;
+}
+
 /** Every shape geometry the spatial queries understand. */
-export type QueryShape = BoxGeometry | SphereGeometry | HalfSpaceGeometry | TorusGeometry | ConvexMeshGeometry;
+export type QueryShape = BoxGeometry | SphereGeometry | HalfSpaceGeometry | TorusGeometry | ConvexMeshGeometry | CapsuleGeometry;

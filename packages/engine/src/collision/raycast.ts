@@ -149,6 +149,8 @@ export function rayCastShapeUnchecked(
       toLocal(n, x, M, origin, unitDirection);
       t = rayTorusLocal(n, shape, M, maxDistance, outHit, tolerance, maxSteps);
       break;
+    default:
+      t = -1; // (the capsule's ray cast is being written)
   }
   outHit.distance = t;
   if (t < 0) return -1;

@@ -5,8 +5,8 @@
  */
 import type { ShapeKind } from '../shapes/shape.js';
 
-const KIND_COUNT = 5;
-/** Which unordered kind pairs have warned (index min·5 + max). No allocation after load. */
+const KIND_COUNT = 7;
+/** Which unordered kind pairs have warned (index min·KIND_COUNT + max). No allocation after load. */
 const warned = new Uint8Array(KIND_COUNT * KIND_COUNT);
 
 function kindIndex(kind: ShapeKind): number {
@@ -21,6 +21,10 @@ function kindIndex(kind: ShapeKind): number {
       return 3;
     case 'mesh':
       return 4;
+    case 'capsule':
+      return 5;
+    case 'compound':
+      return 6;
     default:
       return -1;
   }

@@ -2,7 +2,7 @@ import type { Dims } from '@physin/algebra';
 import type { ColliderTable } from '../collision/manifold.js';
 
 /** The kinds of shape the engine knows. */
-export type ShapeKind = 'box' | 'sphere' | 'halfspace' | 'torus' | 'mesh';
+export type ShapeKind = 'box' | 'sphere' | 'halfspace' | 'torus' | 'mesh' | 'capsule' | 'compound';
 
 /**
  * Mass properties of a shape for a given mass, in the shape's own (principal) frame.

@@ -77,6 +77,19 @@ export interface BodyOptions {
   readonly material?: Partial<Material>;
   /** An optional name, used in error messages. */
   readonly name?: string;
+  /**
+   * The collision groups the body belongs to: a 32-bit mask (an integer in 0..2³²−1); default 1
+   * (group 0). Two bodies make contacts only when each one's group meets the other's mask.
+   */
+  readonly collisionGroup?: number;
+  /** The groups the body collides with: a 32-bit mask; default 0xffffffff (every group). */
+  readonly collisionMask?: number;
+  /**
+   * A sensor reports 'begin' and 'end' events while it overlaps other bodies and makes no contact
+   * impulses (nothing pushes it and it pushes nothing); two sensors do not see each other.
+   * Default false.
+   */
+  readonly sensor?: boolean;
 }
 
 /**
@@ -94,7 +107,38 @@ export const MOTION_STATIC = 2;
 const motionOf: Record<BodyType, Motion> = { dynamic: MOTION_DYNAMIC, kinematic: MOTION_KINEMATIC, static: MOTION_STATIC };
 const typeOf: readonly BodyType[] = ['dynamic', 'kinematic', 'static'];
 
-const OPTION_NAMES = new Set(['shape', 'mass', 'type', 'position', 'rotor', 'velocity', 'angularVelocity', 'material', 'name']);
+const OPTION_NAMES = new Set([
+  'shape',
+  'mass',
+  'type',
+  'position',
+  'rotor',
+  'velocity',
+  'angularVelocity',
+  'material',
+  'name',
+  'collisionGroup',
+  'collisionMask',
+  'sensor',
+]);
+
+/** The largest 32-bit collision mask. */
+const ALL_GROUPS = 0xffffffff;
+
+/** Checks a 32-bit collision mask (an integer in 0..2³²−1) and returns it. */
+function checkGroupBits(fn: string, label: string, value: unknown): number {
+  if (typeof value !== 'number') throw new TypeError(`${fn}: ${label} must be a number (a 32-bit mask), got ${typeof value}`);
+  if (!Number.isInteger(value) || value < 0 || value > ALL_GROUPS) {
+    throw new RangeError(`${fn}: ${label} must be an integer in 0..0xffffffff (a 32-bit mask), got ${value}`);
+  }
+  return value;
+}
+
+/** Checks a sensor flag and returns it. */
+function checkSensorFlag(fn: string, label: string, value: unknown): boolean {
+  if (typeof value !== 'boolean') throw new TypeError(`${fn}: ${label} must be a boolean, got ${typeof value}`);
+  return value;
+}
 
 let nextBodyId = 1;
 
@@ -286,6 +330,51 @@ export class Body {
   }
   private materialValue: Material;
 
+  /**
+   * The collision groups the body belongs to (a 32-bit mask; default 1). Two bodies make contacts
+   * only when (a.collisionGroup & b.collisionMask) and (b.collisionGroup & a.collisionMask) are
+   * both nonzero; `World.pairFilter` may refuse a pair besides. Setting it wakes the body.
+   * @throws TypeError / RangeError unless an integer in 0..0xffffffff.
+   */
+  get collisionGroup(): number {
+    return this.groupBits;
+  }
+  set collisionGroup(value: number) {
+    this.groupBits = checkGroupBits('Body.collisionGroup', "value 'collisionGroup'", value);
+    this.wake();
+  }
+  /**
+   * The groups the body collides with (a 32-bit mask; default 0xffffffff, every group). Setting
+   * it wakes the body.
+   * @throws TypeError / RangeError unless an integer in 0..0xffffffff.
+   */
+  get collisionMask(): number {
+    return this.maskBits;
+  }
+  set collisionMask(value: number) {
+    this.maskBits = checkGroupBits('Body.collisionMask', "value 'collisionMask'", value);
+    this.wake();
+  }
+  /**
+   * Whether the body is a sensor: it reports 'begin' / 'end' events while it overlaps another
+   * body and makes no contact impulses (it falls through the floor if dynamic); two sensors do
+   * not see each other. Setting it wakes the body.
+   * @throws TypeError unless a boolean.
+   */
+  get sensor(): boolean {
+    return this.sensorFlag;
+  }
+  set sensor(value: boolean) {
+    this.sensorFlag = checkSensorFlag('Body.sensor', "value 'sensor'", value);
+    this.wake();
+  }
+  /** @internal The collision group bits (see collisionGroup). */
+  groupBits: number;
+  /** @internal The collision mask bits (see collisionMask). */
+  maskBits: number;
+  /** @internal Whether the body is a sensor. */
+  sensorFlag: boolean;
+
   /** @internal Motion code: MOTION_DYNAMIC, MOTION_KINEMATIC or MOTION_STATIC. */
   motion: Motion;
   /** @internal Mass (kg); 0 for static and massless kinematic bodies. */
@@ -451,6 +540,9 @@ export class Body {
       }
     }
     const material = checkMaterial(options.material, fn);
+    const groupBits = options.collisionGroup === undefined ? 1 : checkGroupBits(fn, "option 'collisionGroup'", options.collisionGroup);
+    const maskBits = options.collisionMask === undefined ? ALL_GROUPS : checkGroupBits(fn, "option 'collisionMask'", options.collisionMask);
+    const sensorFlag = options.sensor === undefined ? false : checkSensorFlag(fn, "option 'sensor'", options.sensor);
     const frameOffset = shape.frameOffset;
     const frameRotor = shape.frameRotor;
     if (frameOffset !== undefined) {
@@ -472,6 +564,9 @@ export class Body {
     this.D = D;
     this.shape = shape;
     this.materialValue = material;
+    this.groupBits = groupBits;
+    this.maskBits = maskBits;
+    this.sensorFlag = sensorFlag;
     this.motion = motionOf[type];
     this.massValue = mass;
     this.invMass = type === 'dynamic' ? 1 / mass : 0;

@@ -18,6 +18,7 @@ export type { WorldRayHit } from './queries.js';
 export { snapshotWorld, restoreWorld } from './snapshot/snapshot.js';
 export type { ContactEvents } from './contacts/contact-events.js';
 export type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
+export type { PairFilter } from './contacts/contact-set.js';
 export { Body } from './body.js';
 export type { BodyOptions, BodyType, Material } from './body.js';
 export type { InputLimits } from './shapes/limits.js';

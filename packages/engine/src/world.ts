@@ -19,6 +19,7 @@ import type { QueryShape } from './collision/query-shapes.js';
 import { ContactEvents } from './contacts/contact-events.js';
 import type { CollisionEvent } from './contacts/contact-events.js';
 import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from './contacts/contact-set.js';
+import type { PairFilter } from './contacts/contact-set.js';
 import { ContactSolver } from './solver/contact-solver.js';
 import { Islands } from './solver/islands.js';
 import { SolverBodies } from './solver/solver-bodies.js';
@@ -243,6 +244,8 @@ export class WorldBase {
   private boundsStale = false;
   private readonly events: ContactEvents;
   private readonly collisionEvent: CollisionEvent;
+  /** The pair filter (setPairFilter), or null. Not saved in snapshots: a function is code, not state. */
+  private filterFn: PairFilter | null = null;
   private readonly setSleeping = (body: Body, asleep: boolean): void => {
     body.sleeping = asleep;
     if (asleep) {
@@ -356,6 +359,30 @@ export class WorldBase {
     }
     this.currentParams = merged;
     this.stepParams = scaledParams(merged);
+    return this;
+  }
+
+  /** The pair filter given to {@link WorldBase.setPairFilter}, or null. */
+  get pairFilter(): PairFilter | null {
+    return this.filterFn;
+  }
+
+  /**
+   * Sets a pair filter, or removes it (null): a function of the two bodies of a pair whose boxes
+   * overlap, asked each time the narrowphase would collide them (once per sub-step while one of
+   * them moves); false means no contact, as if their groups and masks kept them apart
+   * (`Body.collisionGroup`, `Body.collisionMask`). It must not throw or change the world, and it
+   * should allocate nothing (it runs in the step). Every body wakes, so that resting pairs are
+   * asked too. Snapshots do not hold it: set it again on a restored world.
+   * @throws TypeError unless a function or null.
+   */
+  setPairFilter(filter: PairFilter | null): this {
+    if (filter !== null && typeof filter !== 'function') {
+      throw new TypeError(`World.setPairFilter: argument 'filter' must be a function (a, b) => boolean or null, got ${typeof filter}`);
+    }
+    this.filterFn = filter;
+    this.compact();
+    for (const body of this.bodyList) body.wake();
     return this;
   }
 
@@ -689,7 +716,7 @@ export class WorldBase {
       const unbounded = this.updateBroadphase();
       if (unbounded >= 0) this.failStep(bodies[unbounded]!, s, subSteps);
       const bp = this.broadphase as BroadphaseBase;
-      this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax);
+      this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax, this.filterFn);
       this.solveContacts(p);
       const js = this.jointSolver;
       if (js !== null && js.brokenCount > 0) this.breakJoints(js);

@@ -34,6 +34,19 @@ export const CONTACT_TOUCHING = 1;
 export const CONTACT_WAS_TOUCHING = 2;
 /** Flag: the manifold was refreshed in this sub-step (one of the bodies is awake). */
 export const CONTACT_ACTIVE = 4;
+/**
+ * Flag: one of the two bodies is a sensor. The slot tells overlap (CONTACT_TOUCHING: some point
+ * with separation < 0) for the begin / end events and nothing else: no solver rows (it is never
+ * CONTACT_ACTIVE), no island link, no waking.
+ */
+export const CONTACT_SENSOR = 8;
+
+/**
+ * A pair filter: called with the two bodies of a pair whose boxes overlap, each time the
+ * narrowphase would collide them (once per sub-step while one of them moves); false means no
+ * contact. It must not throw or change the world.
+ */
+export type PairFilter = (a: Body, b: Body) => boolean;
 
 /** Key of the pair of proxies (a, b), a < b: a·2²⁶ + b, exact in a double. */
 export const PAIR_KEY_SCALE = 67_108_864;
@@ -423,6 +436,7 @@ export class ContactSet {
     scratch: NarrowphaseScratch,
     tightMin: Float64Array,
     tightMax: Float64Array,
+    filter: PairFilter | null,
   ): void {
     const margin = params.contactMargin;
     const n = this.n;
@@ -442,11 +456,18 @@ export class ContactSet {
       let flags = this.flags[slot] & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0;
       if (!isMoving(A) && !isMoving(B)) {
         // Asleep against asleep (or static): keep the manifold and the touching state.
-        this.flags[slot] = flags | (this.flags[slot] & CONTACT_TOUCHING);
+        this.flags[slot] = flags | (this.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR));
         continue;
       }
-      if (A.jointPeers !== null && A.jointPeers.indexOf(B) >= 0) {
-        // A joint with collideConnected false holds the two: no contact between them.
+      if (
+        (A.jointPeers !== null && A.jointPeers.indexOf(B) >= 0) ||
+        (A.groupBits & B.maskBits) === 0 ||
+        (B.groupBits & A.maskBits) === 0 ||
+        (A.sensorFlag && B.sensorFlag) ||
+        (filter !== null && !filter(A, B))
+      ) {
+        // A joint with collideConnected false holds the two, their groups and masks keep them
+        // apart, both are sensors, or the world's pair filter refuses them: no contact.
         this.manifolds[slot].count = 0;
         this.cache.forget(slot);
         this.flags[slot] = flags;
@@ -476,7 +497,8 @@ export class ContactSet {
       }
       // Box–box: reuse the manifold while the boxes have hardly moved relative to each other
       // (manifold-cache.ts); its points, ids and impulses stay where they are.
-      const reusable = reuseTolerance > 0 && A.shape.kind === 'box' && B.shape.kind === 'box';
+      const sensor = A.sensorFlag || B.sensorFlag;
+      const reusable = !sensor && reuseTolerance > 0 && A.shape.kind === 'box' && B.shape.kind === 'box';
       if (reusable) {
         const h = (B.shape as BoxShape).halfExtents;
         let r2 = 0;
@@ -512,6 +534,18 @@ export class ContactSet {
       // never pairs this manifold's ids with points cached before it.)
       if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
       else this.cache.forget(slot);
+      if (sensor) {
+        // A sensor's slot tells overlap alone: no impulses, no friction patch, no sweep.
+        let overlap = false;
+        for (let p = 0; p < m.count; p += 1) {
+          if (m.separations[p] < 0) overlap = true;
+          this.normalImpulse[ni + p] = 0;
+          this.approachSpeed[ni + p] = 0;
+        }
+        this.clearPatch(slot);
+        this.flags[slot] = flags | CONTACT_SENSOR | (overlap ? CONTACT_TOUCHING : 0);
+        continue;
+      }
       // A speculative manifold whose gap the velocities would close only along its normal (the
       // row's linear view) but that the bodies never reach in this sub-step is a ghost: it would
       // push a body flying past an edge. Swept, it is dropped (docs/solver.md, Speculative contacts).

@@ -43,6 +43,9 @@ export function writeBody(w: SnapshotWriter, D: Dims, body: Body, shapeIndex: nu
   w.f64(body.invMass);
   w.f64(body.material.friction);
   w.f64(body.material.restitution);
+  w.u32(body.groupBits);
+  w.u32(body.maskBits);
+  w.bool(body.sensorFlag);
   w.f64s(body.inertia, 0, k);
   w.f64s(body.invInertia, 0, k);
   w.bool(body.comOffset !== null);
@@ -75,6 +78,9 @@ export function readBody(r: SnapshotReader, D: Dims, shapes: readonly Shape[]): 
   const invMass = r.f64();
   const friction = r.f64();
   const restitution = r.f64();
+  const collisionGroup = r.u32();
+  const collisionMask = r.u32();
+  const sensor = r.bool();
   const inertia = r.f64s(k);
   const invInertia = r.f64s(k);
   const comOffset = r.bool() ? r.f64s(n) : null;
@@ -97,6 +103,9 @@ export function readBody(r: SnapshotReader, D: Dims, shapes: readonly Shape[]): 
       type: TYPES[motion]!,
       mass,
       material: { friction, restitution },
+      collisionGroup,
+      collisionMask,
+      sensor,
       ...(name === undefined ? {} : { name }),
     });
   } catch (error) {

@@ -22,7 +22,7 @@ export const SNAPSHOT_MAGIC = Object.freeze([0x50, 0x4e, 0x57, 0x53]);
  * The format version. Raise it whenever the payload changes meaning or layout; a reader accepts
  * only its own version (a snapshot is for moving a running world, not for archiving).
  */
-export const SNAPSHOT_VERSION = 2;
+export const SNAPSHOT_VERSION = 3;
 /** Bytes of the header before the payload. */
 export const SNAPSHOT_HEADER_BYTES = 16;
 

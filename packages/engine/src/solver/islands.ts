@@ -18,7 +18,7 @@ import { MOTION_DYNAMIC } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
 import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
-import { CONTACT_TOUCHING, growFloat64, growInt32, isMoving } from '../contacts/contact-set.js';
+import { CONTACT_SENSOR, CONTACT_TOUCHING, growFloat64, growInt32, isMoving } from '../contacts/contact-set.js';
 
 /** Scratch of the island pass. */
 export class Islands {
@@ -68,7 +68,8 @@ export class Islands {
     }
     for (let c = 0; c < contacts.count; c += 1) {
       const slot = contacts.order[c];
-      if (!(contacts.flags[slot] & CONTACT_TOUCHING)) continue;
+      // (a sensor's overlap links no island: it holds nothing up and wakes nothing)
+      if ((contacts.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
       const A = contacts.bodyA[slot] as Body;
       const B = contacts.bodyB[slot] as Body;
       const dynA = A.motion === MOTION_DYNAMIC;

@@ -540,8 +540,10 @@ export class Body {
       }
     }
     const material = checkMaterial(options.material, fn);
-    const groupBits = options.collisionGroup === undefined ? 1 : checkGroupBits(fn, "option 'collisionGroup'", options.collisionGroup);
-    const maskBits = options.collisionMask === undefined ? ALL_GROUPS : checkGroupBits(fn, "option 'collisionMask'", options.collisionMask);
+    const groupBits =
+      options.collisionGroup === undefined ? 1 : checkGroupBits(fn, "option 'collisionGroup'", options.collisionGroup);
+    const maskBits =
+      options.collisionMask === undefined ? ALL_GROUPS : checkGroupBits(fn, "option 'collisionMask'", options.collisionMask);
     const sensorFlag = options.sensor === undefined ? false : checkSensorFlag(fn, "option 'sensor'", options.sensor);
     const frameOffset = shape.frameOffset;
     const frameRotor = shape.frameRotor;

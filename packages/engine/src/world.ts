@@ -378,7 +378,9 @@ export class WorldBase {
    */
   setPairFilter(filter: PairFilter | null): this {
     if (filter !== null && typeof filter !== 'function') {
-      throw new TypeError(`World.setPairFilter: argument 'filter' must be a function (a, b) => boolean or null, got ${typeof filter}`);
+      throw new TypeError(
+        `World.setPairFilter: argument 'filter' must be a function (a, b) => boolean or null, got ${typeof filter}`,
+      );
     }
     this.filterFn = filter;
     this.compact();

@@ -129,6 +129,19 @@ describe('groups and masks', () => {
     expect(() => ((b as { sensor: unknown }).sensor = 'yes')).toThrow(TypeError);
     expect([b.collisionGroup, b.collisionMask, b.sensor]).toEqual([1, 0xffffffff, false]);
   });
+  it('setCollisionFilter sets group, mask and sensor together, or nothing when one entry is bad', () => {
+    const D = dims(4);
+    const b = new Body(D, { shape: HyperSphere(D, 1) });
+    b.setCollisionFilter({ group: 6, sensor: true });
+    expect([b.collisionGroup, b.collisionMask, b.sensor]).toEqual([6, 0xffffffff, true]);
+    expect(() => b.setCollisionFilter({ group: 1, mask: -2 })).toThrow(
+      /Body.setCollisionFilter: entry 'filter.mask' must be an integer/,
+    );
+    expect(() => b.setCollisionFilter({ group: 1, sensor: 0 as never })).toThrow(TypeError);
+    expect(() => b.setCollisionFilter({ groups: 1 } as never)).toThrow(/unknown entry 'groups'/);
+    expect(() => b.setCollisionFilter(null as never)).toThrow(/argument 'filter' must be an object/);
+    expect([b.collisionGroup, b.collisionMask, b.sensor]).toEqual([6, 0xffffffff, true]);
+  });
 });
 
 describe('the pair filter', () => {

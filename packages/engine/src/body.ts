@@ -1077,6 +1077,33 @@ export class Body {
   }
 
   /**
+   * Sets the collision group, mask and sensor flag together (entries left out keep their value;
+   * see {@link Body.collisionGroup}, {@link Body.collisionMask}, {@link Body.sensor}). All are
+   * checked before any changes. Wakes the body.
+   * @throws TypeError / RangeError naming the bad entry.
+   */
+  setCollisionFilter(filter: { readonly group?: number; readonly mask?: number; readonly sensor?: boolean }): this {
+    const fn = 'Body.setCollisionFilter';
+    if (filter === null || typeof filter !== 'object') {
+      throw new TypeError(
+        `${fn}: argument 'filter' must be an object { group?, mask?, sensor? }, got ${filter === null ? 'null' : typeof filter}`,
+      );
+    }
+    for (const key of Object.keys(filter)) {
+      if (key !== 'group' && key !== 'mask' && key !== 'sensor') {
+        throw new RangeError(`${fn}: unknown entry '${key}' of argument 'filter' (known: group, mask, sensor)`);
+      }
+    }
+    const group = filter.group === undefined ? this.groupBits : checkGroupBits(fn, "entry 'filter.group'", filter.group);
+    const mask = filter.mask === undefined ? this.maskBits : checkGroupBits(fn, "entry 'filter.mask'", filter.mask);
+    const sensor = filter.sensor === undefined ? this.sensorFlag : checkSensorFlag(fn, "entry 'filter.sensor'", filter.sensor);
+    this.groupBits = group;
+    this.maskBits = mask;
+    this.sensorFlag = sensor;
+    return this.wake();
+  }
+
+  /**
    * Changes the mass (kg, finite, >= 0); the inertia scales with it. 0 makes the body static (its
    * velocities and pending forces are cleared); a positive mass makes a static body dynamic. A
    * moving body keeps v and ω, and L is rescaled to I_world ω.

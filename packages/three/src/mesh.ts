@@ -235,6 +235,28 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
 
   // --- commands ---------------------------------------------------------------------------------
 
+  /**
+   * Sets the body's collision group and mask (32-bit masks: two bodies collide only when each
+   * one's group meets the other's mask) and whether it is a sensor (it reports `collision` events
+   * while it overlaps and pushes nothing); entries left out keep their value. Before `add` it is
+   * kept and applied at `add`, as every command.
+   */
+  setCollisionFilter(filter: { readonly group?: number; readonly mask?: number; readonly sensor?: boolean }): this {
+    if (filter === null || typeof filter !== 'object') {
+      throw new TypeError(
+        `${this.constructor.name}.setCollisionFilter: argument 'filter' must be an object { group?, mask?, sensor? }, got ${describe(filter)}`,
+      );
+    }
+    const where = `${this.constructor.name}.setCollisionFilter`;
+    // checked here too, so a bad value throws at the call even before add
+    if (filter.group !== undefined) integer(where, 'filter.group', filter.group, 0, 0xffffffff);
+    if (filter.mask !== undefined) integer(where, 'filter.mask', filter.mask, 0, 0xffffffff);
+    if (filter.sensor !== undefined && typeof filter.sensor !== 'boolean') {
+      throw new TypeError(`${where}: entry 'filter.sensor' must be a boolean, got ${describe(filter.sensor)}`);
+    }
+    return this.command('setCollisionFilter', { ...filter });
+  }
+
   /** Sets the linear velocity (n numbers). */
   setLinearVelocity(v: VectorInput): this {
     return this.command('setLinearVelocity', { velocity: this.vector('setLinearVelocity', 'v', v) });

@@ -41,6 +41,10 @@ const handlers: { readonly [C in CommandName]: Handler<C> } = {
     if (p.restitution !== undefined) material.restitution = p.restitution;
     t.bodyOf(p.id, 'id').setMaterial(material);
   },
+  setCollisionFilter: (t, p) => {
+    const { id: _id, ...filter } = p;
+    t.bodyOf(p.id, 'id').setCollisionFilter(filter);
+  },
   wake: (t, p) => void t.bodyOf(p.id, 'id').wake(),
   setPositionN: (t, p) => void t.bodyOf(p.id, 'id').setPositionN(p.position),
   setRotor: (t, p) => void t.bodyOf(p.id, 'id').setRotor(p.rotor),

@@ -21,7 +21,20 @@ import {
 import type { Dims, Joint, Shape, SubspaceJointOptions } from '@physin/engine';
 import type { BodyDescription, HostId, JointDescription, ShapeDescription } from './types.js';
 
-const BODY_KEYS = new Set(['shape', 'mass', 'type', 'position', 'rotor', 'velocity', 'angularVelocity', 'material', 'name']);
+const BODY_KEYS = new Set([
+  'shape',
+  'mass',
+  'type',
+  'position',
+  'rotor',
+  'velocity',
+  'angularVelocity',
+  'material',
+  'name',
+  'collisionGroup',
+  'collisionMask',
+  'sensor',
+]);
 const JOINT_KINDS = ['point', 'distance', 'fixed', 'hinge', 'subspace'] as const;
 
 function isObject(value: unknown): value is Record<string, unknown> {

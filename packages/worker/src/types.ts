@@ -95,6 +95,12 @@ export interface BodyDescription {
   readonly material?: Partial<Material>;
   /** A name, used in error messages. */
   readonly name?: string;
+  /** The collision groups the body belongs to (a 32-bit mask); default 1. */
+  readonly collisionGroup?: number;
+  /** The groups it collides with (a 32-bit mask); default 0xffffffff. */
+  readonly collisionMask?: number;
+  /** A sensor reports overlap events and makes no contact impulses; default false. */
+  readonly sensor?: boolean;
 }
 
 /** Options every joint takes (the engine's `JointOptions`). */
@@ -184,6 +190,17 @@ export interface CommandMap {
     readonly friction?: number;
     /** Restitution (0..1). */
     readonly restitution?: number;
+  };
+  /** `Body.collisionGroup`, `Body.collisionMask`, `Body.sensor`: entries left out keep their value. */
+  setCollisionFilter: {
+    /** The body. */
+    readonly id: HostId;
+    /** The groups the body belongs to (a 32-bit mask). */
+    readonly group?: number;
+    /** The groups it collides with (a 32-bit mask). */
+    readonly mask?: number;
+    /** Whether it is a sensor. */
+    readonly sensor?: boolean;
   };
   /** `Body.wake`: wakes a sleeping body. */
   wake: {

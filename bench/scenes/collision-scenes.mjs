@@ -23,7 +23,7 @@
 //   golden-section refinement; Rapier: its capsule polygons, segment to segment);
 // - body–bin: the depth of the body below each inner face of the bin (floor top, four walls).
 // Returns the worst and the mean depth over the overlapping pairs, their count, and the bodies
-// that left the bin (below the floor or outside the walls).
+// that left the bin (centre below the floor or beyond a wall; counted apart, not in the depths).
 
 import { World, Body, ConvexMesh, HyperBox, HyperTorus, dims } from '@physin/engine';
 import { quaternionToRotor, rotorToQuaternion } from '@physin/algebra';
@@ -473,6 +473,9 @@ const BIN_PLANES = [
   [0, 0, 1, -BIN_HALF],
 ];
 
+/** Whether a body's centre has left the bin (below the floor or beyond a wall). */
+const outside = (x) => x[1] < 0 || Math.abs(x[0]) > BIN_HALF || Math.abs(x[2]) > BIN_HALF;
+
 /**
  * Penetration at the scene's current poses (see the top of the file).
  *
@@ -515,7 +518,10 @@ export function penetration(scene) {
   }
   for (let i = 0; i < N; i += 1) {
     const { x } = poses[i];
-    if (x[1] < 0 || Math.abs(x[0]) > BIN_HALF || Math.abs(x[2]) > BIN_HALF) lost += 1;
+    if (outside(x)) {
+      lost += 1; // counted apart: its depth below the floor is not a penetration of a contact
+      continue;
+    }
     // against the bin's inner faces
     for (const [nx, ny, nz, d] of BIN_PLANES) {
       let low;
@@ -537,6 +543,7 @@ export function penetration(scene) {
     // against the other bodies
     for (let j = i + 1; j < N; j += 1) {
       const y = poses[j].x;
+      if (outside(y)) continue;
       const dist = Math.hypot(x[0] - y[0], x[1] - y[1], x[2] - y[2]);
       if (dist >= 2 * reach) continue;
       let depth;

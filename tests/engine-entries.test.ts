@@ -12,6 +12,7 @@ import * as internal from '@physin/engine/internal';
 /** What a user calls: the root export, name by name. A name added here is a promise. */
 const PUBLIC = [
   'Body',
+  'Compound',
   'ConvexMesh',
   'DistanceJoint',
   'FixedJoint',

@@ -171,6 +171,8 @@ function scratchFor(D: Dims): BodyScratch {
 
 /** The largest distance of a point of the shape from its local origin (m); 0 for a half-space. */
 function shapeBoundingRadius(n: number, shape: Shape): number {
+  // a compound knows its own: the farthest point of any part from the centre of mass
+  if (shape.kind === 'compound') return (shape as unknown as { readonly boundingRadius: number }).boundingRadius;
   const g = shape as unknown as QueryShape;
   switch (g.kind) {
     case 'box': {

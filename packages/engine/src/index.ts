@@ -34,6 +34,7 @@ export { HyperSphere } from './shapes/sphere.js';
 export { HalfSpace } from './shapes/half-space.js';
 export { HyperTorus } from './shapes/torus.js';
 export { ConvexMesh } from './shapes/convex-mesh.js';
+export { Compound } from './shapes/compound.js';
 export type {
   AnyShape,
   BoxShape,
@@ -41,6 +42,8 @@ export type {
   HalfSpaceShape,
   TorusShape,
   ConvexMeshShape,
+  CompoundShape,
+  CompoundPart,
   ConvexMeshOptions,
   ConvexMeshTriangleOptions,
   TriangleMergeOptions,

@@ -23,6 +23,8 @@ export interface WorldRayHit {
   readonly normal: Float64Array;
   /** Distance from the origin along the normalised direction (m). */
   readonly distance: number;
+  /** Which part of the body was hit: its index in the body's compound (`Compound`), 0 for a body of one shape. */
+  readonly part: number;
 }
 
 /**
@@ -55,16 +57,17 @@ export function castRay(
   checkNumber('maxDistance', maxDistance, fn);
   if (!(maxDistance >= 0))
     throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
-  const { broadphase, bodyOfProxy } = w.queryParts();
+  const { broadphase, bodyOfProxy, shapeOfProxy, poseOfProxy, partOfProxy } = w.queryParts();
+  // Per proxy: a body's shape, or one part of a compound body, at its own pose.
   const source: RayCastSource = {
-    shapeOf: (id) => bodyOfProxy[id]!.shape as unknown as QueryShape,
-    positionOf: (id) => bodyOfProxy[id]!.pose!.x,
-    rotationOf: (id) => bodyOfProxy[id]!.pose!.M,
+    shapeOf: (id) => shapeOfProxy[id] as unknown as QueryShape,
+    positionOf: (id) => poseOfProxy[id]!.x,
+    rotationOf: (id) => poseOfProxy[id]!.M,
   };
   const out = createRayCastResult(w.n);
   const id = rayCastClosest(broadphase, source, origin, direction, maxDistance, out);
   if (id < 0) return null;
-  return { body: bodyOfProxy[id]!, point: out.point, normal: out.normal, distance: out.distance };
+  return { body: bodyOfProxy[id]!, point: out.point, normal: out.normal, distance: out.distance, part: partOfProxy[id]! };
 }
 
 /**
@@ -88,7 +91,14 @@ export function queryBox(world: WorldBase, min: ArrayLike<number>, max: ArrayLik
   const list = createIdList();
   queryOverlap(broadphase, min, max, list);
   const found: Body[] = [];
-  for (let i = 0; i < list.count; i += 1) found.push(bodyOfProxy[list.ids[i]!]!);
+  // A compound body is found once, however many of its parts' boxes meet the box.
+  const seen = new Set<Body>();
+  for (let i = 0; i < list.count; i += 1) {
+    const body = bodyOfProxy[list.ids[i]!]!;
+    if (seen.has(body)) continue;
+    seen.add(body);
+    found.push(body);
+  }
   found.sort((a, b) => a.worldIndex - b.worldIndex);
   return found;
 }

@@ -12,6 +12,7 @@ import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
 import { createPose } from './collision/manifold.js';
+import type { Pose } from './collision/manifold.js';
 import { createNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './collision/broadphase-constants.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
@@ -19,6 +20,9 @@ import type { QueryShape } from './collision/query-shapes.js';
 import { ContactEvents } from './contacts/contact-events.js';
 import type { CollisionEvent } from './contacts/contact-events.js';
 import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from './contacts/contact-set.js';
+import type { ProxyTables } from './contacts/contact-set.js';
+import type { CompoundShape } from './shapes/compound.js';
+import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
 import { ContactSolver } from './solver/contact-solver.js';
 import { Islands } from './solver/islands.js';
@@ -217,6 +221,17 @@ export class WorldBase {
   // ---- collision and contacts (see docs/solver.md) ----
   private readonly broadphase: Broadphase;
   private bodyOfProxy: (Body | null)[] = [];
+  /**
+   * Per proxy id: its body (the same array as bodyOfProxy), the shape the proxy holds (the body's
+   * shape, or one part of a compound), that shape's pose (the body's pose, or the part's), and the
+   * part's index (0 for a single shape). The contact set reads them per pair of proxies.
+   */
+  private readonly proxyTables: ProxyTables;
+  /**
+   * Per proxy id of a compound body (its `proxyId`, the first part's): the proxy ids of all its
+   * parts, in part order; null (or absent) for a body of one shape.
+   */
+  private partProxies: (Int32Array | null)[] = [];
   private readonly narrowScratch: NarrowphaseScratch;
   private readonly contacts: ContactSet;
   private readonly solverBodies: SolverBodies;
@@ -253,13 +268,16 @@ export class WorldBase {
       body.L.fill(0);
       body.w.fill(0);
     }
-    this.broadphase.setAwake(body.proxyId, !asleep);
+    this.setProxiesAwake(body, !asleep);
   };
   private readonly owner: BodyOwner = {
     onBodyChanged: (body: Body): void => {
       if (body.proxyId < 0) return;
-      this.broadphase.setStatic(body.proxyId, body.motion === MOTION_STATIC);
-      this.broadphase.setAwake(body.proxyId, !body.sleeping);
+      const ids = this.partProxies[body.proxyId];
+      if (ids === undefined || ids === null) {
+        this.broadphase.setStatic(body.proxyId, body.motion === MOTION_STATIC);
+      } else for (let i = 0; i < ids.length; i += 1) this.broadphase.setStatic(ids[i]!, body.motion === MOTION_STATIC);
+      this.setProxiesAwake(body, !body.sleeping);
     },
     onMaterialChanged: (body: Body): void => {
       this.contacts.refreshMaterial(body);
@@ -305,7 +323,8 @@ export class WorldBase {
     const unit = params.lengthUnit;
     this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
     this.narrowScratch = createNarrowphaseScratch(D.n, { featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit });
-    this.contacts = new ContactSet(D.n);
+    this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
+    this.contacts = new ContactSet(D.n, this.proxyTables);
     this.solverBodies = new SolverBodies(D);
     this.solver = new ContactSolver(D, this.gravityValue);
     this.events = new ContactEvents(D.n);
@@ -313,6 +332,8 @@ export class WorldBase {
       type: 'begin',
       body: null as unknown as Body,
       other: null as unknown as Body,
+      part: 0,
+      otherPart: 0,
       point: new Float64Array(D.n),
       normal: new Float64Array(D.n),
       impulse: 0,
@@ -506,10 +527,23 @@ export class WorldBase {
     this.updatePose(body);
     const sc = this.scratch;
     const isHalfSpace = body.shape.kind === 'halfspace';
-    if (isHalfSpace) this.halfSpacePlane(body);
+    const compound = body.shape.kind === 'compound' ? (body.shape as unknown as CompoundShape) : null;
+    const partPoses: Pose[] = [];
+    let finite = 0;
+    if (compound !== null) {
+      // One proxy per part: each part's box must be finite.
+      for (let i = 0; i < compound.partCount; i += 1) {
+        const pose = createPose(this.n);
+        this.partPose(body, compound, i, pose);
+        partPoses.push(pose);
+        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
+        for (let c = 0; c < this.n; c += 1) finite += sc.min[c]! * 0 + sc.max[c]! * 0;
+      }
+    } else if (isHalfSpace) this.halfSpacePlane(body);
     else this.boundsOf(body);
-    let finite = isHalfSpace ? sc.max[0]! * 0 : 0;
-    for (let i = 0; i < this.n; i += 1) finite += isHalfSpace ? sc.normal[i]! * 0 : sc.min[i]! * 0 + sc.max[i]! * 0;
+    if (compound === null) finite = isHalfSpace ? sc.max[0]! * 0 : 0;
+    for (let i = 0; i < this.n && compound === null; i += 1)
+      finite += isHalfSpace ? sc.normal[i]! * 0 : sc.min[i]! * 0 + sc.max[i]! * 0;
     if (finite !== 0) {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) is so far from the origin that its bounding box overflows`);
     }
@@ -524,10 +558,21 @@ export class WorldBase {
     this.bodyView = null;
     this.reach[body.worldIndex] = 0;
     const bp = this.broadphase;
+    if (compound !== null) {
+      const ids = new Int32Array(compound.partCount);
+      for (let i = 0; i < ids.length; i += 1) {
+        const pose = partPoses[i]!;
+        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
+        ids[i] = bp.createProxy(sc.min, sc.max, body.motion === MOTION_STATIC);
+      }
+      body.proxyId = ids[0]!;
+      this.setBodyProxies(body, ids, partPoses);
+      return body;
+    }
     body.proxyId = isHalfSpace
       ? bp.createHalfSpaceProxy(sc.normal, sc.max[0]!)
       : bp.createProxy(sc.min, sc.max, body.motion === MOTION_STATIC);
-    this.bodyOfProxy[body.proxyId] = body;
+    this.setBodyProxies(body, null, null);
     return body;
   }
 
@@ -556,8 +601,11 @@ export class WorldBase {
     this.bodyList[index] = null as unknown as Body;
     this.holes += 1;
     this.contacts.removeBody(body, this.events);
-    this.broadphase.destroyProxy(body.proxyId);
-    this.bodyOfProxy[body.proxyId] = null;
+    const ids = this.partProxies[body.proxyId];
+    if (ids !== undefined && ids !== null) {
+      this.partProxies[body.proxyId] = null;
+      for (let i = 0; i < ids.length; i += 1) this.clearProxy(ids[i]!);
+    } else this.clearProxy(body.proxyId);
     body.proxyId = -1;
     body.worldIndex = -1;
     body.sleeping = false;
@@ -754,6 +802,26 @@ export class WorldBase {
       boundsStale: this.boundsStale,
       broadphase: this.broadphase as BroadphaseBase,
       bodyOfProxy: this.bodyOfProxy,
+      partProxies: this.partProxies,
+      setBodyProxies: (body: Body, ids: Int32Array | null): void => {
+        const compound = ids === null ? null : (body.shape as unknown as CompoundShape);
+        const poses: Pose[] | null = compound === null ? null : [];
+        if (compound !== null) {
+          for (let i = 0; i < compound.partCount; i += 1) {
+            const pose = createPose(this.n);
+            this.partPose(body, compound, i, pose);
+            poses!.push(pose);
+          }
+        }
+        this.setBodyProxies(body, ids, poses);
+      },
+      clearProxyTables: (): void => {
+        this.bodyOfProxy.length = 0;
+        this.partProxies.length = 0;
+        this.proxyTables.shape.length = 0;
+        this.proxyTables.pose.length = 0;
+        this.proxyTables.part.length = 0;
+      },
       contacts: this.contacts,
       events: this.events,
       setBoundsStale: (stale: boolean): void => {
@@ -790,6 +858,80 @@ export class WorldBase {
     const pose = body.pose!;
     pose.x.set(body.x);
     this.D.kernels.toMatrix(pose.M, body.R);
+    const ids = this.partProxies[body.proxyId];
+    if (ids !== undefined && ids !== null) {
+      const compound = body.shape as unknown as CompoundShape;
+      const poses = this.proxyTables.pose;
+      for (let i = 0; i < ids.length; i += 1) this.partPose(body, compound, i, poses[ids[i]!]!);
+    }
+  }
+
+  /**
+   * The world pose of part `i` of a compound body into `out`: x_i = x + M·offset_i,
+   * M_i = M·rotation_i (the body's pose composed with the part's place in the body).
+   */
+  private partPose(body: Body, compound: CompoundShape, i: number, out: Pose): void {
+    const n = this.n;
+    const pose = body.pose!;
+    const x = pose.x;
+    const M = pose.M;
+    const off = compound.partOffsets;
+    const rot = compound.partRotations;
+    const o = i * n;
+    const q = i * n * n;
+    for (let a = 0; a < n; a += 1) {
+      let s = x[a]!;
+      for (let c = 0; c < n; c += 1) s += M[a * n + c]! * off[o + c]!;
+      out.x[a] = s;
+      for (let b = 0; b < n; b += 1) {
+        let t = 0;
+        for (let c = 0; c < n; c += 1) t += M[a * n + c]! * rot[q + c * n + b]!;
+        out.M[a * n + b] = t;
+      }
+    }
+  }
+
+  /**
+   * Fills the proxy tables of `body`: one proxy (`ids` null: its `proxyId`, its shape and pose),
+   * or one per part of a compound (`ids`, with the parts' poses).
+   */
+  private setBodyProxies(body: Body, ids: Int32Array | null, poses: Pose[] | null): void {
+    const t = this.proxyTables;
+    if (ids === null) {
+      const id = body.proxyId;
+      this.bodyOfProxy[id] = body;
+      t.shape[id] = body.shape;
+      t.pose[id] = body.pose;
+      t.part[id] = 0;
+      this.partProxies[id] = null;
+      return;
+    }
+    const compound = body.shape as unknown as CompoundShape;
+    for (let i = 0; i < ids.length; i += 1) {
+      const id = ids[i]!;
+      this.bodyOfProxy[id] = body;
+      t.shape[id] = compound.parts[i]!;
+      t.pose[id] = poses![i]!;
+      t.part[id] = i;
+      this.partProxies[id] = null;
+    }
+    this.partProxies[ids[0]!] = ids;
+  }
+
+  /** Destroys proxy `id` and clears its entries of the proxy tables. */
+  private clearProxy(id: number): void {
+    this.broadphase.destroyProxy(id);
+    this.bodyOfProxy[id] = null;
+    this.proxyTables.shape[id] = null;
+    this.proxyTables.pose[id] = null;
+    this.proxyTables.part[id] = 0;
+  }
+
+  /** Marks every proxy of `body` (one, or one per part) awake or asleep in the broadphase. */
+  private setProxiesAwake(body: Body, awake: boolean): void {
+    const ids = this.partProxies[body.proxyId];
+    if (ids === undefined || ids === null) this.broadphase.setAwake(body.proxyId, awake);
+    else for (let i = 0; i < ids.length; i += 1) this.broadphase.setAwake(ids[i]!, awake);
   }
 
   /** The world plane of a half-space body into scratch: normal in `normal`, offset in max[0]. */
@@ -833,7 +975,10 @@ export class WorldBase {
 
   /** Moves the proxy of a body to its current pose (a half-space by its plane). */
   private moveProxy(body: Body): void {
-    if (body.shape.kind === 'halfspace') {
+    const ids = this.partProxies[body.proxyId];
+    if (ids !== undefined && ids !== null) {
+      this.moveParts(body, ids);
+    } else if (body.shape.kind === 'halfspace') {
       this.halfSpacePlane(body);
       this.broadphase.moveHalfSpace(body.proxyId, this.scratch.normal, this.scratch.max[0]!);
     } else {
@@ -843,6 +988,25 @@ export class WorldBase {
       for (let i = 0; i < this.n; i += 1) finite += min[i]! * 0 + max[i]! * 0;
       // A body at the edge of overflow keeps its last box; its own step then fails by name.
       if (finite === 0) this.broadphase.moveProxy(body.proxyId, min, max);
+    }
+  }
+
+  /** Moves the proxies of a compound body's parts to their poses, each box grown by the body's reach. */
+  private moveParts(body: Body, ids: Int32Array): void {
+    const { min, max } = this.scratch;
+    const grow = this.reach[body.worldIndex]!;
+    const t = this.proxyTables;
+    for (let p = 0; p < ids.length; p += 1) {
+      const id = ids[p]!;
+      const pose = t.pose[id]!;
+      computeBoundsUnchecked(min, max, this.n, t.shape[id] as unknown as QueryShape, pose.x, pose.M, 0);
+      let finite = 0;
+      for (let i = 0; i < this.n; i += 1) {
+        min[i] = min[i]! - grow;
+        max[i] = max[i]! + grow;
+        finite += min[i]! * 0 + max[i]! * 0;
+      }
+      if (finite === 0) this.broadphase.moveProxy(id, min, max);
     }
   }
 
@@ -960,7 +1124,7 @@ export class WorldBase {
       if (now) {
         this.events.pushBegin(contacts, slot);
       } else {
-        this.events.pushEnd(A, B);
+        this.events.pushEnd(A, B, contacts.partA[slot]!, contacts.partB[slot]!);
       }
     }
   }
@@ -979,6 +1143,8 @@ export class WorldBase {
       for (let side = 0; side < 2; side += 1) {
         e.body = side === 0 ? A : B;
         e.other = side === 0 ? B : A;
+        e.part = side === 0 ? ev.beginPartA[i]! : ev.beginPartB[i]!;
+        e.otherPart = side === 0 ? ev.beginPartB[i]! : ev.beginPartA[i]!;
         const sign = side === 0 ? 1 : -1;
         for (let d = 0; d < n; d += 1) {
           e.point[d] = ev.beginPoint[i * n + d]!;
@@ -998,6 +1164,8 @@ export class WorldBase {
       for (let side = 0; side < 2; side += 1) {
         e.body = side === 0 ? A : B;
         e.other = side === 0 ? B : A;
+        e.part = side === 0 ? ev.endPartA[i]! : ev.endPartB[i]!;
+        e.otherPart = side === 0 ? ev.endPartB[i]! : ev.endPartA[i]!;
         e.body.emitCollision(e);
       }
     }
@@ -1030,9 +1198,22 @@ export class WorldBase {
    * @internal For the queries of queries.ts: the broadphase with every box brought up to the
    * bodies' poses, and the body of each proxy id.
    */
-  queryParts(): { readonly broadphase: Broadphase; readonly bodyOfProxy: readonly (Body | null)[] } {
+  queryParts(): {
+    readonly broadphase: Broadphase;
+    readonly bodyOfProxy: readonly (Body | null)[];
+    readonly shapeOfProxy: readonly (Shape | null)[];
+    readonly poseOfProxy: readonly (Pose | null)[];
+    readonly partOfProxy: readonly number[];
+  } {
     this.refreshBounds();
-    return { broadphase: this.broadphase, bodyOfProxy: this.bodyOfProxy };
+    const t = this.proxyTables;
+    return {
+      broadphase: this.broadphase,
+      bodyOfProxy: this.bodyOfProxy,
+      shapeOfProxy: t.shape,
+      poseOfProxy: t.pose,
+      partOfProxy: t.part,
+    };
   }
 
   /** Undoes the current step and throws the error that names the body. */

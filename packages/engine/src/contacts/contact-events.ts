@@ -9,7 +9,7 @@
  * @module
  */
 import type { Body } from '../body.js';
-import { growFloat64 } from './contact-set.js';
+import { growFloat64, growInt32 } from './contact-set.js';
 import type { ContactSet } from './contact-set.js';
 
 /** What a collision listener receives. The object is reused: copy the fields you keep. */
@@ -20,6 +20,13 @@ export interface CollisionEvent {
   body: Body;
   /** The other body. */
   other: Body;
+  /**
+   * Which part of `body` touched: the index into its compound's parts (`Compound(D, parts)`), 0
+   * for a body of one shape. Two compounds make one event per pair of parts that touch.
+   */
+  part: number;
+  /** Which part of `other` touched (0 for a body of one shape). */
+  otherPart: number;
   /** Deepest contact point at the start of the touch (world, n numbers); zeros for 'end'. */
   readonly point: Float64Array;
   /** Contact normal pointing from `body` to `other` (n numbers); zeros for 'end'. */
@@ -51,15 +58,25 @@ export class ContactEvents {
   beginNormal: Float64Array;
   /** Total normal impulse of each begin event (N·s). */
   beginImpulse: Float64Array;
+  /** The part of A of each begin event (its index in A's compound; 0 for a body of one shape). */
+  beginPartA: Int32Array = new Int32Array(8);
+  /** The part of B of each begin event. */
+  beginPartB: Int32Array = new Int32Array(8);
   /** Count of end events of the last step. */
   endCount = 0;
   /** First body of each end event. */
   readonly endA: Body[] = [];
   /** Second body of each end event. */
   readonly endB: Body[] = [];
+  /** The part of A of each end event (0 for a body of one shape). */
+  endPartA: Int32Array = new Int32Array(8);
+  /** The part of B of each end event. */
+  endPartB: Int32Array = new Int32Array(8);
   /** End events of pairs whose body left the world between steps, for the next step's list. */
   private readonly laterA: Body[] = [];
   private readonly laterB: Body[] = [];
+  private laterPartA: Int32Array = new Int32Array(8);
+  private laterPartB: Int32Array = new Int32Array(8);
   private laterCount = 0;
 
   /** @internal */
@@ -81,6 +98,14 @@ export class ContactEvents {
       this.endA[i] = this.laterA[i]!;
       this.endB[i] = this.laterB[i]!;
     }
+    if (this.laterCount > this.endPartA.length) {
+      this.endPartA = growInt32(this.endPartA, this.laterCount);
+      this.endPartB = growInt32(this.endPartB, this.laterCount);
+    }
+    for (let i = 0; i < this.laterCount; i += 1) {
+      this.endPartA[i] = this.laterPartA[i]!;
+      this.endPartB[i] = this.laterPartB[i]!;
+    }
     this.endCount = this.laterCount;
     this.laterCount = 0;
   }
@@ -91,18 +116,30 @@ export class ContactEvents {
    * with the events of the next step, as Box2D does, so that a reader of the last step's list is
    * not surprised by an event appended after the step, and no end goes unreported.
    */
-  pushEndLater(A: Body, B: Body): void {
+  pushEndLater(A: Body, B: Body, partA = 0, partB = 0): void {
     const i = this.laterCount++;
     this.laterA[i] = A;
     this.laterB[i] = B;
+    if (i >= this.laterPartA.length) {
+      this.laterPartA = growInt32(this.laterPartA, i + 1);
+      this.laterPartB = growInt32(this.laterPartB, i + 1);
+    }
+    this.laterPartA[i] = partA;
+    this.laterPartB[i] = partB;
   }
 
   /**
    * @internal The end events recorded for the next step (pushEndLater), for world snapshots:
    * `count` pairs (a[i], b[i]).
    */
-  pendingEnds(): { readonly count: number; readonly a: readonly Body[]; readonly b: readonly Body[] } {
-    return { count: this.laterCount, a: this.laterA, b: this.laterB };
+  pendingEnds(): {
+    readonly count: number;
+    readonly a: readonly Body[];
+    readonly b: readonly Body[];
+    readonly partA: Int32Array;
+    readonly partB: Int32Array;
+  } {
+    return { count: this.laterCount, a: this.laterA, b: this.laterB, partA: this.laterPartA, partB: this.laterPartB };
   }
 
   /**
@@ -124,6 +161,12 @@ export class ContactEvents {
       this.beginNormal = growFloat64(this.beginNormal, (i + 1) * n);
       this.beginImpulse = growFloat64(this.beginImpulse, i + 1);
     }
+    if (i >= this.beginPartA.length) {
+      this.beginPartA = growInt32(this.beginPartA, i + 1);
+      this.beginPartB = growInt32(this.beginPartB, i + 1);
+    }
+    this.beginPartA[i] = contacts.partA[slot]!;
+    this.beginPartB[i] = contacts.partB[slot]!;
     this.beginA[i] = A;
     this.beginB[i] = B;
     let deepest = 0;
@@ -136,9 +179,15 @@ export class ContactEvents {
   }
 
   /** @internal Records that A and B stopped touching. */
-  pushEnd(A: Body, B: Body): void {
+  pushEnd(A: Body, B: Body, partA = 0, partB = 0): void {
     const i = this.endCount++;
     this.endA[i] = A;
     this.endB[i] = B;
+    if (i >= this.endPartA.length) {
+      this.endPartA = growInt32(this.endPartA, i + 1);
+      this.endPartB = growInt32(this.endPartB, i + 1);
+    }
+    this.endPartA[i] = partA;
+    this.endPartB[i] = partB;
   }
 }

@@ -22,6 +22,7 @@ import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
 import type { BoxShape } from '../shapes/box.js';
+import type { Shape } from '../shapes/shape.js';
 import type { ContactEvents } from './contact-events.js';
 import { ManifoldCache } from './manifold-cache.js';
 
@@ -47,6 +48,18 @@ export const CONTACT_SENSOR = 8;
  * contact. It must not throw or change the world.
  */
 export type PairFilter = (a: Body, b: Body) => boolean;
+
+/**
+ * What the world knows per broadphase proxy id, shared with its contact set: the body, the shape
+ * the proxy holds (the body's shape, or one part of a compound body), that shape's world pose
+ * (the body's pose, or the part's) and the part's index (0 for a body of one shape).
+ */
+export interface ProxyTables {
+  readonly body: (Body | null)[];
+  readonly shape: (Shape | null)[];
+  readonly pose: (Pose | null)[];
+  readonly part: number[];
+}
 
 /** Key of the pair of proxies (a, b), a < b: a·2²⁶ + b, exact in a double. */
 export const PAIR_KEY_SCALE = 67_108_864;
@@ -106,6 +119,20 @@ export class ContactSet {
   bodyA: (Body | null)[] = [];
   /** Second body of each slot. */
   bodyB: (Body | null)[] = [];
+  /** The shape of each slot's first proxy: body A's shape, or the part of A's compound it holds. */
+  shapeA: (Shape | null)[] = [];
+  /** The shape of each slot's second proxy. */
+  shapeB: (Shape | null)[] = [];
+  /** The world pose of shapeA (body A's pose, or its part's). */
+  poseA: (Pose | null)[] = [];
+  /** The world pose of shapeB. */
+  poseB: (Pose | null)[] = [];
+  /** The index of shapeA among the parts of A's compound (0 for a body of one shape). */
+  partA: Int32Array = new Int32Array(16);
+  /** The index of shapeB among the parts of B's compound. */
+  partB: Int32Array = new Int32Array(16);
+  /** The world's tables per proxy id (see ProxyTables). */
+  readonly proxies: ProxyTables;
   /** The manifold of each slot (normal from A to B). */
   manifolds: Manifold[] = [];
   /** Accumulated normal impulse per manifold point (N·s), pointCapacity per slot. */
@@ -150,8 +177,9 @@ export class ContactSet {
   /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
   private readonly reuseNumbers = new Float64Array(2);
 
-  constructor(n: number) {
+  constructor(n: number, proxies: ProxyTables = { body: [], shape: [], pose: [], part: [] }) {
     this.n = n;
+    this.proxies = proxies;
     this.pointCapacity = maxManifoldPoints(n);
     this.normalImpulse = new Float64Array(16 * this.pointCapacity);
     this.approachSpeed = new Float64Array(16 * this.pointCapacity);
@@ -189,9 +217,15 @@ export class ContactSet {
     this.freeSlots = growInt32(this.freeSlots, cap);
     this.order = growInt32(this.order, cap);
     this.orderNext = growInt32(this.orderNext, cap);
+    this.partA = growInt32(this.partA, cap);
+    this.partB = growInt32(this.partB, cap);
     for (let s = cap - 1; s >= this.capacity; s -= 1) {
       this.bodyA[s] = null;
       this.bodyB[s] = null;
+      this.shapeA[s] = null;
+      this.shapeB[s] = null;
+      this.poseA[s] = null;
+      this.poseB[s] = null;
       this.manifolds[s] = createManifold(this.n, this.pointCapacity);
     }
     // New slots are handed out lowest first.
@@ -208,6 +242,10 @@ export class ContactSet {
   private freeSlot(slot: number): void {
     this.bodyA[slot] = null;
     this.bodyB[slot] = null;
+    this.shapeA[slot] = null;
+    this.shapeB[slot] = null;
+    this.poseA[slot] = null;
+    this.poseB[slot] = null;
     this.manifolds[slot].count = 0;
     this.flags[slot] = 0;
     this.cache.forget(slot);
@@ -248,7 +286,7 @@ export class ContactSet {
         i += 1;
         if (r < removedCount && removed[2 * r] * PAIR_KEY_SCALE + removed[2 * r + 1] === liveKey) {
           r += 1;
-          if (this.flags[slot] & CONTACT_TOUCHING) events.pushEnd(this.bodyA[slot]!, this.bodyB[slot]!);
+          if (this.flags[slot] & CONTACT_TOUCHING) events.pushEnd(this.bodyA[slot]!, this.bodyB[slot]!, this.partA[slot]!, this.partB[slot]!);
           this.freeSlot(slot);
           continue;
         }
@@ -260,11 +298,13 @@ export class ContactSet {
         a += 1;
         const A = bodyOfProxy[pa];
         const B = bodyOfProxy[pb];
+        if (A === B) continue; // two parts of one compound body never pair
         if (!A || !B || (A.motion !== MOTION_DYNAMIC && B.motion !== MOTION_DYNAMIC)) continue;
         const slot = this.allocSlot();
         keys[slot] = addKey;
         this.bodyA[slot] = A;
         this.bodyB[slot] = B;
+        this.setSlotProxies(slot, pa, pb);
         this.manifolds[slot].count = 0;
         this.flags[slot] = 0;
         this.normalImpulse.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
@@ -277,6 +317,20 @@ export class ContactSet {
     this.orderNext = order;
     this.order = out;
     this.count = o;
+  }
+
+  /**
+   * @internal Gives `slot` the shapes, poses and part indices of proxies pa (A) and pb (B) from
+   * the world's proxy tables.
+   */
+  setSlotProxies(slot: number, pa: number, pb: number): void {
+    const t = this.proxies;
+    this.shapeA[slot] = t.shape[pa]!;
+    this.shapeB[slot] = t.shape[pb]!;
+    this.poseA[slot] = t.pose[pa]!;
+    this.poseB[slot] = t.pose[pb]!;
+    this.partA[slot] = t.part[pa]!;
+    this.partB[slot] = t.part[pb]!;
   }
 
   /** Friction and restitution of a pair: geometric mean of friction, the larger restitution (Box2D's rules). */
@@ -308,7 +362,7 @@ export class ContactSet {
       const B = this.bodyB[slot];
       if (A === body || B === body) {
         if (this.flags[slot] & CONTACT_TOUCHING) {
-          events.pushEndLater(A!, B!);
+          events.pushEndLater(A!, B!, this.partA[slot]!, this.partB[slot]!);
           (A === body ? B : A)!.wake();
         }
         this.freeSlot(slot);
@@ -346,9 +400,13 @@ export class ContactSet {
    * spheres and boxes are swept (a torus is not convex); other pairs, and a sweep that has not
    * settled, keep the manifold. The sub-step h is read from the reaches, h·(|v| + |ω|·ρ).
    */
-  private meetsInSubStep(m: Manifold, A: Body, B: Body, reach: Float64Array, scratch: NarrowphaseScratch): boolean {
-    const kA = A.shape.kind;
-    const kB = B.shape.kind;
+  private meetsInSubStep(m: Manifold, A: Body, B: Body, slot: number, reach: Float64Array, scratch: NarrowphaseScratch): boolean {
+    // The slot's shapes (a compound body's part): the bodies' speeds and bounding radii still
+    // bound how far any point of the part moves, so the sweep below holds for parts too.
+    const sA = this.shapeA[slot]!;
+    const sB = this.shapeB[slot]!;
+    const kA = sA.kind;
+    const kB = sB.kind;
     if ((kA !== 'sphere' && kA !== 'box') || (kB !== 'sphere' && kB !== 'box')) return true;
     const n = this.n;
     let gap = Infinity;
@@ -386,7 +444,7 @@ export class ContactSet {
     for (let c = 0; c < n; c += 1) closing -= m.normal[c] * (vB[c] - vA[c]);
     if (gap - h * closing > tolerance) return true;
     const pose = sw.pose;
-    const poseB = B.pose!;
+    const poseB = this.poseB[slot]!;
     pose.M.set(poseB.M);
     const out = sw.manifold;
     let t = 0;
@@ -399,7 +457,7 @@ export class ContactSet {
       if (t > h) return false;
       for (let c = 0; c < n; c += 1) pose.x[c] = poseB.x[c] + t * (vB[c] - vA[c]);
       // (The narrowphase margin is still the pair's, set for the manifold being checked.)
-      collideScratch(out, n, A.shape as never, A.pose!, B.shape as never, pose, scratch);
+      collideScratch(out, n, sA as never, this.poseA[slot]!, sB as never, pose, scratch);
       if (out.count === 0) return false; // farther apart than the margin: moving away
       d = Infinity;
       for (let p = 0; p < out.count; p += 1) if (out.separations[p] < d) d = out.separations[p];
@@ -453,6 +511,11 @@ export class ContactSet {
       const slot = this.order[i];
       const A = this.bodyA[slot]!;
       const B = this.bodyB[slot]!;
+      // The shapes and poses of the slot's two proxies: the bodies', or parts of compounds.
+      const sA = this.shapeA[slot]!;
+      const sB = this.shapeB[slot]!;
+      const pA = this.poseA[slot]!;
+      const pB = this.poseB[slot]!;
       let flags = this.flags[slot] & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0;
       if (!isMoving(A) && !isMoving(B)) {
         // Asleep against asleep (or static): keep the manifold and the touching state.
@@ -478,9 +541,11 @@ export class ContactSet {
       // The broadphase pairs fattened boxes; most such pairs in a pile are farther apart than the
       // margin. Their tight boxes (already grown by the reaches) then miss each other by more
       // than `margin` on some axis, and the narrowphase is skipped.
-      if (A.shape.kind !== 'halfspace' && B.shape.kind !== 'halfspace') {
-        const pa = A.proxyId * n;
-        const pb = B.proxyId * n;
+      if (sA.kind !== 'halfspace' && sB.kind !== 'halfspace') {
+        const key = this.keys[slot];
+        const proxyA = Math.floor(key / PAIR_KEY_SCALE);
+        const pa = proxyA * n;
+        const pb = (key - proxyA * PAIR_KEY_SCALE) * n;
         let apart = false;
         for (let c = 0; c < n; c += 1) {
           if (tightMin[pa + c] - tightMax[pb + c] > margin || tightMin[pb + c] - tightMax[pa + c] > margin) {
@@ -498,14 +563,14 @@ export class ContactSet {
       // Box–box: reuse the manifold while the boxes have hardly moved relative to each other
       // (manifold-cache.ts); its points, ids and impulses stay where they are.
       const sensor = A.sensorFlag || B.sensorFlag;
-      const reusable = !sensor && reuseTolerance > 0 && A.shape.kind === 'box' && B.shape.kind === 'box';
+      const reusable = !sensor && reuseTolerance > 0 && sA.kind === 'box' && sB.kind === 'box';
       if (reusable) {
-        const h = (B.shape as BoxShape).halfExtents;
+        const h = (sB as BoxShape).halfExtents;
         let r2 = 0;
         for (let c = 0; c < n; c += 1) r2 += h[c] * h[c];
         reuseNumbers[1] = Math.sqrt(r2);
-        if (this.cache.check(slot, A.pose!, B.pose!, reuseNumbers)) {
-          this.cache.reuse(slot, m, A.pose!, B.pose!);
+        if (this.cache.check(slot, pA, pB, reuseNumbers)) {
+          this.cache.reuse(slot, m, pA, pB);
           let touching = false;
           for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
           this.flags[slot] = flags | CONTACT_ACTIVE | (touching ? CONTACT_TOUCHING : 0);
@@ -523,7 +588,7 @@ export class ContactSet {
         for (let c = 0; c < n; c += 1) oldPoints[p * n + c] = m.points[p * n + c];
       }
       scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
-      collideScratch(m, n, A.shape as never, A.pose!, B.shape as never, B.pose!, scratch);
+      collideScratch(m, n, sA as never, pA, sB as never, pB, scratch);
       // A pose at the edge of overflow can give a manifold of NaN: drop it rather than let it
       // carry non-finite impulses into the other body (the world then names the culprit).
       let finite = 0;
@@ -532,7 +597,7 @@ export class ContactSet {
       if (finite !== 0) m.count = 0;
       // (Not reusable, e.g. the tolerance set to 0 for a while: forget, so that a later reuse
       // never pairs this manifold's ids with points cached before it.)
-      if (reusable) this.cache.store(slot, m, A.pose!, B.pose!);
+      if (reusable) this.cache.store(slot, m, pA, pB);
       else this.cache.forget(slot);
       if (sensor) {
         // A sensor's slot tells overlap alone: no impulses, no friction patch, no sweep.
@@ -551,9 +616,9 @@ export class ContactSet {
       // push a body flying past an edge. Swept, it is dropped (docs/solver.md, Speculative contacts).
       if (
         m.count > 0 &&
-        A.shape.kind !== 'halfspace' &&
-        B.shape.kind !== 'halfspace' &&
-        !this.meetsInSubStep(m, A, B, reach, scratch)
+        sA.kind !== 'halfspace' &&
+        sB.kind !== 'halfspace' &&
+        !this.meetsInSubStep(m, A, B, slot, reach, scratch)
       ) {
         m.count = 0;
         if (reusable) this.cache.forget(slot);

@@ -16,6 +16,8 @@ export type { TorusShape } from './torus.js';
 export { ConvexMesh, DEFAULT_CONVEX_MESH_TOLERANCE } from './convex-mesh.js';
 export type { ConvexMeshOptions, ConvexMeshShape, ConvexMeshTriangleOptions } from './convex-mesh.js';
 export type { TriangleMergeOptions } from './triangle-merge.js';
+export { Compound } from './compound.js';
+export type { CompoundPart, CompoundShape } from './compound.js';
 export { closedMeshMassProperties, simplexMassProperties } from './mesh-mass.js';
 export type { SimplexMassProperties, SolidMassProperties } from './mesh-mass.js';
 export { ballVolume, gammaHalfInteger } from './ball-volume.js';

@@ -80,13 +80,18 @@ export function readContacts(r: SnapshotReader, D: Dims, set: ContactSet, bodies
     if (ai >= bodies.length || bi >= bodies.length) r.fail(`a contact names body ${ai} or ${bi} of ${bodies.length}`);
     const A = bodies[ai]!;
     const B = bodies[bi]!;
-    if (!(key > lastKey) || key !== A.proxyId * PAIR_KEY_SCALE + B.proxyId || !(A.proxyId < B.proxyId)) {
+    // The key names the two proxies (a compound body has one per part): they must be A's and B's.
+    const pa = Math.floor(key / PAIR_KEY_SCALE);
+    const pb = key - pa * PAIR_KEY_SCALE;
+    const owners = set.proxies.body;
+    if (!(key > lastKey) || !(pa < pb) || owners[pa] !== A || owners[pb] !== B || A === B) {
       r.fail(`a contact's pair key ${key} does not match its bodies' proxies`);
     }
     lastKey = key;
     set.keys[slot] = key;
     set.bodyA[slot] = A;
     set.bodyB[slot] = B;
+    set.setSlotProxies(slot, pa, pb);
     set.flags[slot] = r.u8();
     set.friction[slot] = r.f64();
     set.restitution[slot] = r.f64();
@@ -122,6 +127,8 @@ export function writePendingEnds(w: SnapshotWriter, events: ContactEvents, refOf
   for (let i = 0; i < p.count; i += 1) {
     w.i32(refOf(p.a[i]!));
     w.i32(refOf(p.b[i]!));
+    w.i32(p.partA[i]!);
+    w.i32(p.partB[i]!);
   }
 }
 
@@ -132,7 +139,7 @@ export function readPendingEnds(
   bodies: readonly Body[],
   departed: readonly Body[],
 ): void {
-  const count = r.count('the pending end event count', 1 << 26, 8);
+  const count = r.count('the pending end event count', 1 << 26, 16);
   const pick = (ref: number): Body => {
     const body = ref >= 0 ? bodies[ref] : departed[-1 - ref];
     if (body === undefined) return r.fail(`a pending end event names the unknown body reference ${ref}`);
@@ -141,6 +148,9 @@ export function readPendingEnds(
   for (let i = 0; i < count; i += 1) {
     const A = pick(r.i32());
     const B = pick(r.i32());
-    events.pushEndLater(A, B);
+    const partA = r.i32();
+    const partB = r.i32();
+    if (partA < 0 || partB < 0) r.fail(`a pending end event names the part ${Math.min(partA, partB)}`);
+    events.pushEndLater(A, B, partA, partB);
   }
 }

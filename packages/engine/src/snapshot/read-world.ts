@@ -99,15 +99,26 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   readBroadphase(r, parts.broadphase);
   const bp = parts.broadphase;
   const byProxy = parts.bodyOfProxy;
-  byProxy.length = 0;
+  parts.clearProxyTables();
+  let proxies = 0;
+  const partIds: (Int32Array | null)[] = [];
   for (const body of bodies) {
-    const id = body.proxyId;
-    if (!bp.isAlive(id) || byProxy[id] !== undefined) r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
-    if (bp.isHalfSpace(id) !== (body.shape.kind === 'halfspace')) r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
-    byProxy[id] = body;
+    const compound = body.shape.kind === 'compound';
+    // A compound body has one proxy per part (its proxyId is the first part's).
+    const ids = compound ? r.i32s(r.count('the part proxy count', 1 << 26, 4)) : null;
+    if (ids !== null && (ids.length !== (body.shape as unknown as { partCount: number }).partCount || ids[0] !== body.proxyId))
+      r.fail(`${body.label}'s part proxies do not match its compound`);
+    partIds.push(ids);
+    for (const id of ids ?? [body.proxyId]) {
+      if (!bp.isAlive(id) || byProxy[id] !== undefined) r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
+      if (bp.isHalfSpace(id) !== (body.shape.kind === 'halfspace')) r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
+      byProxy[id] = body;
+      proxies += 1;
+    }
   }
+  bodies.forEach((body, i) => parts.setBodyProxies(body, partIds[i]!));
   for (let id = 0; id < bp.idBound; id += 1) if (byProxy[id] === undefined) byProxy[id] = null;
-  if (bp.proxyCount !== bodies.length) r.fail(`the broadphase has ${bp.proxyCount} live proxies for ${bodies.length} bodies`);
+  if (bp.proxyCount !== proxies) r.fail(`the broadphase has ${bp.proxyCount} live proxies for ${proxies} bodies and parts`);
   readContacts(r, D, parts.contacts, bodies);
   readPendingEnds(r, parts.events, bodies, departed);
   if (!r.done) r.fail('bytes are left after the last field');

@@ -21,6 +21,7 @@
  */
 import type { Dims } from '@physin/algebra';
 import type { HyperBox } from '../shapes/box.js';
+import type { Compound } from '../shapes/compound.js';
 import type { ConvexMesh } from '../shapes/convex-mesh.js';
 import type { HalfSpace } from '../shapes/half-space.js';
 import { diagonalMassProperties, checkMassArguments } from '../shapes/mass-properties.js';
@@ -44,9 +45,12 @@ const TAG_I32 = 5;
 const TAG_U32 = 6;
 const TAG_U8 = 7;
 
-/** Whether a field is code, not data (functions and the pair collider table): taken from the rebuilt shape. */
+/**
+ * Whether a field is code, not data (functions and the pair collider table), or a compound's
+ * `parts` (written as shapes of their own before its fields): taken from the rebuilt shape.
+ */
 function isCode(name: string, value: unknown): boolean {
-  return typeof value === 'function' || name === 'colliders';
+  return typeof value === 'function' || name === 'colliders' || name === 'parts';
 }
 
 function hasOwn(object: object, name: string): boolean {
@@ -91,7 +95,22 @@ const REBUILD: Readonly<Record<string, (D: Dims, f: Fields, r: SnapshotReader) =
   torus: (D, f, r) =>
     factory<typeof HyperTorus>('torus', 'HyperTorus')(D, num(r, f, 'majorRadius'), num(r, f, 'minorRadius'), num(r, f, 'plane')),
   mesh: (D, f, r) => rebuildMesh(D, f, r),
+  compound: (D, f, r) => rebuildCompound(D, f, r),
 };
+
+/**
+ * A compound from its saved parts (read before its fields, in `f.parts`): any valid placement
+ * serves, since every data field (offsets, rotations, frame) is then put back as saved.
+ */
+function rebuildCompound(D: Dims, f: Fields, r: SnapshotReader): Shape {
+  const parts = f.parts as Shape[];
+  const offsets = f64(r, f, 'partOffsets');
+  if (offsets.length !== parts.length * D.n) r.fail('a compound has the wrong count of part offsets');
+  return factory<typeof Compound>('compound', 'Compound')(
+    D,
+    parts.map((shape, i) => ({ shape, position: offsets.subarray(i * D.n, (i + 1) * D.n) })),
+  );
+}
 
 /**
  * A convex mesh from its saved vertices (already in the principal frame) and facets. The saved
@@ -141,6 +160,12 @@ export function writeShape(w: SnapshotWriter, D: Dims, shape: Shape): void {
     );
   }
   w.string(kind);
+  if (kind === 'compound') {
+    // The parts first, each a shape of its own (a compound holds no compound).
+    const parts = (shape as unknown as { parts: readonly Shape[] }).parts;
+    w.u32(parts.length);
+    for (const part of parts) writeShape(w, D, part);
+  }
   const mp = unitMass(D, shape);
   w.bool(mp !== null);
   if (mp !== null) {
@@ -192,6 +217,16 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   const kind = r.string();
   const rebuild = hasOwn(REBUILD, kind) ? REBUILD[kind]! : null;
   if (rebuild === null) r.fail(`unknown shape kind '${kind}'`);
+  let parts: Shape[] | null = null;
+  if (kind === 'compound') {
+    const count = r.count('the part count of a compound', 1 << 20, 10);
+    parts = [];
+    for (let i = 0; i < count; i += 1) {
+      const part = readShape(r, D);
+      if (part.kind === 'compound') r.fail('a compound holds a compound');
+      parts.push(part);
+    }
+  }
   let volume = 0;
   let covariance: Float64Array | null = null;
   if (r.bool()) {
@@ -235,7 +270,9 @@ export function readShape(r: SnapshotReader, D: Dims): Shape {
   }
   let built: Shape;
   try {
+    if (parts !== null) fields.parts = parts;
     built = rebuild(D, fields, r);
+    delete fields.parts;
   } catch (error) {
     if (error instanceof Error && error.message.startsWith('restoreWorld')) throw error;
     return r.fail(`the saved ${kind} shape cannot be rebuilt (${(error as Error).message})`);

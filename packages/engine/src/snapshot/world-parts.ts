@@ -20,6 +20,12 @@ export interface WorldParts {
   readonly broadphase: BroadphaseBase;
   /** Body of each broadphase proxy id (null for a free id). */
   readonly bodyOfProxy: (Body | null)[];
+  /** Per proxy id of a compound body (its proxyId): the proxy ids of its parts; null otherwise. */
+  readonly partProxies: readonly (Int32Array | null)[];
+  /** Fills the proxy tables of `body`: its proxyId alone (`ids` null), or one proxy per part. */
+  setBodyProxies(body: Body, ids: Int32Array | null): void;
+  /** Empties every proxy table (bodyOfProxy too), before a restore fills them. */
+  clearProxyTables(): void;
   readonly contacts: ContactSet;
   readonly events: ContactEvents;
   setBoundsStale(stale: boolean): void;

@@ -95,6 +95,13 @@ export function writeWorldSnapshot(world: World, parts: WorldParts): Uint8Array 
 
   w.f64s(parts.reach, 0, bodies.length);
   writeBroadphase(w, parts.broadphase);
+  // The proxy ids of each compound body's parts (the broadphase's ids, as they are).
+  for (const body of bodies) {
+    const ids = body.shape.kind === 'compound' ? parts.partProxies[body.proxyId] : null;
+    if (ids === null || ids === undefined) continue;
+    w.u32(ids.length);
+    w.i32s(ids);
+  }
   writeContacts(w, D, parts.contacts, indexOf);
   writePendingEnds(w, parts.events, (body) =>
     bodies[body.worldIndex] === body ? body.worldIndex : -1 - departedIndex.get(body)!,

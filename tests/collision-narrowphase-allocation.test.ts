@@ -4,7 +4,8 @@
  * Method (as tests/engine-allocation.test.ts): a child `node --expose-gc --max-semi-space-size=256
  * --min-semi-space-size=64` imports the BUILT engine and collides a fixed set of posed pairs of
  * every supported kind (box–box, box–ball, box–half-space, ball–ball, ball–half-space,
- * torus–half-space, torus–ball, mesh–half-space, mesh–ball, mesh–box, mesh–mesh; both orders; resting, tilted and
+ * torus–half-space, torus–ball, mesh–half-space, mesh–ball, mesh–box, mesh–mesh, capsule–half-space,
+ * capsule–ball, capsule–box, capsule–mesh, capsule–capsule; both orders; resting, tilted and
  * random poses; several margins) for n = 2..6 through the hot-path entry point collideScratch
  * (margin in scratch.scalars[NARROWPHASE_MARGIN]) and through collide (margin as an argument),
  * and takes the bounds of every kind of shape through computeBoundsUnchecked. After a warm-up it
@@ -34,7 +35,7 @@ const E = await import(base + '/internal.js');
 const { collideScratch, collide } = await import(base + '/collision/collide.js');
 const { NARROWPHASE_MARGIN } = await import(base + '/collision/narrowphase-scratch.js');
 const { computeBoundsUnchecked } = await import(base + '/collision/bounds.js');
-const { dims, HyperBox, HyperSphere, HalfSpace, HyperTorus, ConvexMesh } = E;
+const { dims, HyperBox, HyperSphere, HalfSpace, HyperTorus, ConvexMesh, HyperCapsule } = E;
 
 let seed = 12345;
 const rand = () => {
@@ -70,9 +71,11 @@ function crossPolytope(D, s) {
 const KINDS = [['box', 'box'], ['box', 'cube'], ['box', 'ball'], ['ball', 'box'], ['box', 'floor'], ['floor', 'box'],
   ['box', 'slope'], ['ball', 'ball'], ['ball', 'floor'], ['ball', 'slope'], ['torus', 'floor'], ['torus', 'slope'],
   ['torus', 'ball'], ['ball', 'torus'], ['mesh', 'floor'], ['mesh', 'slope'], ['mesh', 'ball'], ['ball', 'mesh'],
-  ['mesh', 'box'], ['box', 'mesh'], ['mesh', 'cube'], ['mesh', 'mesh']];
+  ['mesh', 'box'], ['box', 'mesh'], ['mesh', 'cube'], ['mesh', 'mesh'], ['capsule', 'floor'], ['capsule', 'slope'],
+  ['capsule', 'ball'], ['ball', 'capsule'], ['capsule', 'capsule'], ['capsule', 'box'], ['box', 'capsule'], ['capsule', 'mesh']];
 // GJK, EPA and face clipping cost 0.05 ms (4D) to 1.6 ms (6D) a pair: fewer poses of those kinds
-const POLYTOPE_PAIR = (ka, kb) => ka === 'mesh' && kb !== 'floor' && kb !== 'slope' && kb !== 'ball' || kb === 'mesh' && ka === 'box';
+const POLYTOPE_PAIR = (ka, kb) => ka === 'mesh' && kb !== 'floor' && kb !== 'slope' && kb !== 'ball' || kb === 'mesh' && ka === 'box' ||
+  ka === 'capsule' && (kb === 'box' || kb === 'mesh') || kb === 'capsule' && ka === 'box';
 const sets = [];
 for (let n = 2; n <= 6; n += 1) {
   const D = dims(n);
@@ -86,6 +89,7 @@ for (let n = 2; n <= 6; n += 1) {
     slope: HalfSpace(D, Array.from({ length: n }, (_, i) => (i === 1 ? 1 : 0.1 * (i + 1))), 0.3),
     mesh: crossPolytope(D, 0.8),
     torus: n >= 3 ? HyperTorus(D, 1, 0.3, [0, 2]) : null,
+    capsule: HyperCapsule(D, 0.5, 0.3),
   };
   const pairs = [];
   const per = n >= 5 ? 12 : 24;

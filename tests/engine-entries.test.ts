@@ -19,6 +19,7 @@ const PUBLIC = [
   'HalfSpace',
   'HingeJoint',
   'HyperBox',
+  'HyperCapsule',
   'HyperSphere',
   'HyperTorus',
   'Joint',

@@ -184,6 +184,8 @@ function shapeBoundingRadius(n: number, shape: Shape): number {
       return g.radius;
     case 'torus':
       return g.majorRadius + g.minorRadius;
+    case 'capsule':
+      return g.halfHeight + g.radius;
     case 'mesh': {
       let best = 0;
       if (g.vertices === undefined) return 0; // a shape-like object without geometry (tests)

@@ -33,6 +33,7 @@ export { HyperBox } from './shapes/box.js';
 export { HyperSphere } from './shapes/sphere.js';
 export { HalfSpace } from './shapes/half-space.js';
 export { HyperTorus } from './shapes/torus.js';
+export { HyperCapsule } from './shapes/capsule.js';
 export { ConvexMesh } from './shapes/convex-mesh.js';
 export { Compound } from './shapes/compound.js';
 export type {
@@ -42,6 +43,7 @@ export type {
   HalfSpaceShape,
   TorusShape,
   ConvexMeshShape,
+  CapsuleShape,
   CompoundShape,
   CompoundPart,
   ConvexMeshOptions,

@@ -137,7 +137,16 @@ export function checkCollisionShape(shape: unknown, n: number, name: string): vo
       }
       return;
     }
+    case 'capsule': {
+      checkFiniteNumber(s.halfHeight, `${name}.halfHeight`);
+      checkFiniteNumber(s.radius, `${name}.radius`);
+      if (!((s.halfHeight as number) > 0)) throw new RangeError(`'${name}.halfHeight' must be > 0, got ${String(s.halfHeight)}`);
+      if (!((s.radius as number) > 0)) throw new RangeError(`'${name}.radius' must be > 0, got ${String(s.radius)}`);
+      return;
+    }
     default:
-      throw new TypeError(`'${name}.kind' must be 'box', 'sphere', 'halfspace', 'torus' or 'mesh', got ${String(s.kind)}`);
+      throw new TypeError(
+        `'${name}.kind' must be 'box', 'sphere', 'halfspace', 'torus', 'mesh' or 'capsule', got ${String(s.kind)}`,
+      );
   }
 }

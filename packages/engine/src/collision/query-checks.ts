@@ -130,9 +130,15 @@ export function checkShape(shape: unknown, n: number, name = 'shape'): asserts s
       checkFiniteArray(s.facetNormals, offs.length * n, `${name}.facetNormals`);
       return;
     }
+    case 'capsule':
+      checkNumber(s.halfHeight, `${name}.halfHeight`);
+      if (!(s.halfHeight > 0)) throw new RangeError(`${name}.halfHeight must be > 0, got ${s.halfHeight}`);
+      checkNumber(s.radius, `${name}.radius`);
+      if (!(s.radius > 0)) throw new RangeError(`${name}.radius must be > 0, got ${s.radius}`);
+      return;
     default:
       throw new TypeError(
-        `${name}.kind must be 'box', 'sphere', 'halfspace', 'torus' or 'mesh', got ${String((s as { kind?: unknown }).kind)}`,
+        `${name}.kind must be 'box', 'sphere', 'halfspace', 'torus', 'mesh' or 'capsule', got ${String((s as { kind?: unknown }).kind)}`,
       );
   }
 }

@@ -8,7 +8,8 @@
  *
  * Methods: sphere — the quadratic in t, solved without cancellation; box — slab test in the box's
  * frame, the normal from the last slab entered; half-space — one plane; convex mesh — the ray
- * clipped by every facet plane (Cyrus–Beck), the normal from the last facet entered; torus —
+ * clipped by every facet plane (Cyrus–Beck), the normal from the last facet entered; capsule —
+ * the earliest of its cylinder's side and its two end balls (quadratics); torus —
  * sphere tracing of its exact distance function inside its bounding ball, then Newton steps.
  */
 import {
@@ -20,7 +21,8 @@ import {
   checkPose,
   checkShape,
 } from './query-checks.js';
-import type { ConvexMeshGeometry, QueryShape, TorusGeometry } from './query-shapes.js';
+import type { CapsuleGeometry, ConvexMeshGeometry, QueryShape, TorusGeometry } from './query-shapes.js';
+import { CAPSULE_RAY_INSIDE, capsuleRayLocal } from './raycast-capsule.js';
 import { torusDistance, torusRayTrace } from './raycast-torus.js';
 
 /** Where a ray met a shape. `point` and `normal` have n components. */
@@ -149,8 +151,12 @@ export function rayCastShapeUnchecked(
       toLocal(n, x, M, origin, unitDirection);
       t = rayTorusLocal(n, shape, M, maxDistance, outHit, tolerance, maxSteps);
       break;
+    case 'capsule':
+      toLocal(n, x, M, origin, unitDirection);
+      t = rayCapsuleLocal(n, shape, M, maxDistance, outHit);
+      break;
     default:
-      t = -1; // (the capsule's ray cast is being written)
+      t = -1; // no other kind reaches here
   }
   outHit.distance = t;
   if (t < 0) return -1;
@@ -365,6 +371,18 @@ function rayTorusLocal(
 }
 
 const localN = new Float64Array(MAX_DIMENSIONS);
+
+function rayCapsuleLocal(n: number, capsule: CapsuleGeometry, M: ArrayLike<number>, maxDistance: number, hit: RayHit): number {
+  insideStart = false;
+  const t = capsuleRayLocal(n, capsule.halfHeight, capsule.radius, localO, localD, maxDistance, localN);
+  if (t === CAPSULE_RAY_INSIDE) {
+    insideStart = true;
+    return 0;
+  }
+  if (t < 0) return -1;
+  normalToWorld(n, M, localN, 0, 1, hit);
+  return t;
+}
 
 function normalize(n: number, v: Float64Array): void {
   let s = 0;

@@ -1,5 +1,5 @@
 /**
- * Shapes and their mass properties: boxes, balls, half-spaces, tori and convex meshes in n
+ * Shapes and their mass properties: boxes, balls, half-spaces, tori, convex meshes and capsules in n
  * dimensions, plus the mesh integration helpers.
  *
  * @module
@@ -13,6 +13,8 @@ export { HalfSpace } from './half-space.js';
 export type { HalfSpaceShape } from './half-space.js';
 export { HyperTorus } from './torus.js';
 export type { TorusShape } from './torus.js';
+export { HyperCapsule } from './capsule.js';
+export type { CapsuleShape } from './capsule.js';
 export { ConvexMesh, DEFAULT_CONVEX_MESH_TOLERANCE } from './convex-mesh.js';
 export type { ConvexMeshOptions, ConvexMeshShape, ConvexMeshTriangleOptions } from './convex-mesh.js';
 export type { TriangleMergeOptions } from './triangle-merge.js';
@@ -23,10 +25,11 @@ export type { SimplexMassProperties, SolidMassProperties } from './mesh-mass.js'
 export { ballVolume, gammaHalfInteger } from './ball-volume.js';
 
 import type { BoxShape } from './box.js';
+import type { CapsuleShape } from './capsule.js';
 import type { ConvexMeshShape } from './convex-mesh.js';
 import type { HalfSpaceShape } from './half-space.js';
 import type { SphereShape } from './sphere.js';
 import type { TorusShape } from './torus.js';
 
 /** Every concrete shape the engine builds; switch on `kind` to narrow it. */
-export type AnyShape = BoxShape | SphereShape | HalfSpaceShape | TorusShape | ConvexMeshShape;
+export type AnyShape = BoxShape | SphereShape | HalfSpaceShape | TorusShape | ConvexMeshShape | CapsuleShape;

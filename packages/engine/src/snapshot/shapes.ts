@@ -21,6 +21,7 @@
  */
 import type { Dims } from '@physin/algebra';
 import type { HyperBox } from '../shapes/box.js';
+import type { HyperCapsule } from '../shapes/capsule.js';
 import type { Compound } from '../shapes/compound.js';
 import type { ConvexMesh } from '../shapes/convex-mesh.js';
 import type { HalfSpace } from '../shapes/half-space.js';
@@ -95,6 +96,7 @@ const REBUILD: Readonly<Record<string, (D: Dims, f: Fields, r: SnapshotReader) =
   torus: (D, f, r) =>
     factory<typeof HyperTorus>('torus', 'HyperTorus')(D, num(r, f, 'majorRadius'), num(r, f, 'minorRadius'), num(r, f, 'plane')),
   mesh: (D, f, r) => rebuildMesh(D, f, r),
+  capsule: (D, f, r) => factory<typeof HyperCapsule>('capsule', 'HyperCapsule')(D, num(r, f, 'halfHeight'), num(r, f, 'radius')),
   compound: (D, f, r) => rebuildCompound(D, f, r),
 };
 

@@ -9,7 +9,7 @@ export { Scene } from './scene.js';
 export type { SceneOptions, SceneEventMap } from './scene.js';
 export { Mesh } from './mesh.js';
 export type { CollisionEvent, MeshEventMap, MeshPhysics, VectorInput, BivectorInput } from './mesh.js';
-export { BoxMesh, SphereMesh, PlaneMesh, TorusMesh, ConvexMesh } from './meshes.js';
+export { BoxMesh, SphereMesh, PlaneMesh, TorusMesh, CapsuleMesh, ConvexMesh } from './meshes.js';
 export { HyperShapeMesh, HyperBoxMesh, HyperSphereMesh, HyperPlaneMesh, HyperTorusMesh, HyperMesh } from './hyper-meshes.js';
 export type { HyperTorusOptions } from './hyper-meshes.js';
 export { Joint, PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint } from './joints.js';

@@ -155,6 +155,44 @@ export class TorusMesh extends Mesh {
 }
 
 /**
+ * A capsule: the points within `radius` of a segment along the object's y axis, sized from a
+ * `THREE.CapsuleGeometry`'s parameters (`radius`, and `height`, the length of the straight part;
+ * three.js before r170 called it `length`) times the object's (uniform) scale: the body's capsule
+ * has half-height height·s/2 and radius radius·s (the engine's `HyperCapsule`, axis 1 = y).
+ */
+export class CapsuleMesh extends Mesh {
+  constructor(geometry: THREE.BufferGeometry, material?: THREE.Material | THREE.Material[], mass?: number) {
+    const where = 'CapsuleMesh';
+    const g = geometryOf(where, geometry);
+    capsuleParameters(where, g);
+    super(g, material, massOf(where, mass), null);
+  }
+
+  /** @internal */
+  override acceptsDimensions(n: number): boolean {
+    return n === 2 || n === 3;
+  }
+
+  /** @internal */
+  describeShape(): ShapeDescription {
+    const { radius, height } = capsuleParameters('CapsuleMesh', this.geometry);
+    const s = uniformScale(this, 'CapsuleMesh');
+    return { kind: 'capsule', halfHeight: (height * s) / 2, radius: radius * s };
+  }
+}
+
+/** The radius and straight height of a capsule geometry (its `parameters`), checked. */
+function capsuleParameters(where: string, geometry: THREE.BufferGeometry): { radius: number; height: number } {
+  const p = (geometry as { parameters?: { radius?: unknown; height?: unknown; length?: unknown } }).parameters;
+  if (p === undefined || p === null || typeof p !== 'object') {
+    throw new TypeError(`${where}: argument 'geometry' must be a THREE.CapsuleGeometry (with parameters radius and height)`);
+  }
+  const radius = positive(where, 'geometry.parameters.radius', p.radius, 'radius in m');
+  const height = positive(where, 'geometry.parameters.height', p.height ?? p.length, 'length in m');
+  return { radius, height };
+}
+
+/**
  * A convex body from the geometry's triangles (the position attribute, indexed or not; repeated
  * vertices are merged), times the object's scale. The geometry must be convex with the origin
  * inside.

@@ -13,6 +13,7 @@ import {
   HalfSpace,
   HingeJoint,
   HyperBox,
+  HyperCapsule,
   HyperSphere,
   HyperTorus,
   PointJoint,
@@ -57,13 +58,15 @@ export function buildShape(D: Dims, desc: ShapeDescription, where: string): Shap
       return HalfSpace(D, desc.normal, desc.offset);
     case 'torus':
       return HyperTorus(D, desc.majorRadius, desc.minorRadius, desc.plane);
+    case 'capsule':
+      return HyperCapsule(D, desc.halfHeight, desc.radius);
     case 'convex':
       return ConvexMesh(D, desc.vertices, desc.facets);
     case 'triangles':
       return ConvexMesh.fromTriangles(D, desc.positions, desc.indices);
     default:
       throw new RangeError(
-        `${where}: unknown shape kind '${String((desc as { kind?: unknown }).kind)}' (known: box, sphere, halfspace, torus, convex, triangles)`,
+        `${where}: unknown shape kind '${String((desc as { kind?: unknown }).kind)}' (known: box, sphere, halfspace, torus, capsule, convex, triangles)`,
       );
   }
 }

@@ -59,6 +59,17 @@ export type ShapeDescription =
       readonly plane: readonly [number, number];
     }
   | {
+      /**
+       * A capsule (the engine's `HyperCapsule`): the points within `radius` of the segment from
+       * −halfHeight to +halfHeight along local axis 1 ("y").
+       */
+      readonly kind: 'capsule';
+      /** Half the length of the core segment (m, > 0). */
+      readonly halfHeight: number;
+      /** Radius (m, > 0). */
+      readonly radius: number;
+    }
+  | {
       /** A convex polytope (the engine's `ConvexMesh`) from its vertices and boundary facets. */
       readonly kind: 'convex';
       /** Vertices, n numbers each, flat. */

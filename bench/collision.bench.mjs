@@ -85,7 +85,8 @@ const lane = (scene, engine) => ({
   finish: (s) => {
     const t0 = performance.now();
     const p = penetration(s);
-    return { ...p, measureMs: performance.now() - t0 };
+    const speeds = s.speeds();
+    return { ...p, maxSpeed: Math.max(...speeds), measureMs: performance.now() - t0 };
   },
 });
 
@@ -120,6 +121,7 @@ for (const scene of SCENES) {
       'mean pen. (mm)': mm(r.mean),
       'overlapping pairs': r.overlaps ?? NaN,
       'left the bin': r.lost ?? NaN,
+      'max speed at the end (m/s)': r.maxSpeed ?? NaN,
     });
   });
   const [ours, theirs] = results;
@@ -137,7 +139,7 @@ for (const scene of SCENES) {
 }
 
 medianTable(
-  `Collision scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs); penetration after the last step of that run`,
+  `Collision scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs); penetration and the largest body speed after the last step of that run`,
   rows,
 );
 medianTable('Collision scenes: ratio of the median ms/step (below 1: PhysiN faster), and penetration', ratios);

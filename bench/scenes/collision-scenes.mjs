@@ -163,7 +163,9 @@ function binBoxes() {
  * The layout in PhysiN: a World (3D, PHYSIN_PARAMS merged with `params`), the bin as 5 static
  * HyperBoxes, one body per layout entry.
  *
- * @returns {{ engine: 'PhysiN', layout, world, bodies: Body[], step(): void, poses(): Pose[], hull?, dispose(): void }}
+ * @returns {{ engine: 'PhysiN', layout, world, bodies: Body[], step(): void, poses(): { x, q }[],
+ *   speeds(): number[], hull?, dispose(): void }} poses: centre and quaternion [x, y, z, w] of each
+ *   body; speeds: |v| of each body (m/s)
  */
 export function buildPhysinBin(layout, params = {}) {
   const D = dims(3);
@@ -200,6 +202,7 @@ export function buildPhysinBin(layout, params = {}) {
         rotorToQuaternion(q, b.R);
         return { x: Array.from(b.x), q: Array.from(q) };
       }),
+    speeds: () => bodies.map((b) => Math.hypot(b.v[0], b.v[1], b.v[2])),
     dispose: () => {},
   };
 }
@@ -290,6 +293,11 @@ export function buildRapierBin(RAPIER, layout) {
         const t = b.translation();
         const r = b.rotation();
         return { x: [t.x, t.y, t.z], q: [r.x, r.y, r.z, r.w] };
+      }),
+    speeds: () =>
+      bodies.map((b) => {
+        const v = b.linvel();
+        return Math.hypot(v.x, v.y, v.z);
       }),
     dispose: () => world.free(),
   };

@@ -859,11 +859,14 @@ export class WorldBase {
     pose.x.set(body.x);
     this.D.kernels.toMatrix(pose.M, body.R);
     const ids = this.partProxies[body.proxyId];
-    if (ids !== undefined && ids !== null) {
-      const compound = body.shape as unknown as CompoundShape;
-      const poses = this.proxyTables.pose;
-      for (let i = 0; i < ids.length; i += 1) this.partPose(body, compound, i, poses[ids[i]!]!);
-    }
+    if (ids !== undefined && ids !== null) this.updatePartPoses(body, ids);
+  }
+
+  /** The poses of a compound body's parts (proxies `ids`) from the body's pose. */
+  private updatePartPoses(body: Body, ids: Int32Array): void {
+    const compound = body.shape as unknown as CompoundShape;
+    const poses = this.proxyTables.pose;
+    for (let i = 0; i < ids.length; i += 1) this.partPose(body, compound, i, poses[ids[i]!]!);
   }
 
   /**

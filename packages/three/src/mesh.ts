@@ -36,6 +36,13 @@ export interface CollisionEvent {
   readonly relativeVelocity: Float64Array;
   /** Total normal impulse of the first touching sub-step, N·s (0 for 'end'). */
   readonly impulse: number;
+  /**
+   * The mesh of this body that touched: a child mesh that is a part of this mesh's body (see
+   * {@link Mesh}, compound bodies), or this mesh itself.
+   */
+  readonly part: Mesh;
+  /** The mesh of the other body that touched: `other`, or one of its child meshes. */
+  readonly otherPart: Mesh;
 }
 
 /** Events of a PhysiN mesh, on top of three's. */
@@ -92,6 +99,11 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
   readonly _lastQuaternion = new THREE.Quaternion();
   /** @internal Commands called before `add`, in order. */
   readonly _pending: PendingCommand[] = [];
+  /**
+   * @internal The meshes of a compound body, in part order: this mesh, then its child PhysiN
+   * meshes as they were at `add`; null for a body of one shape.
+   */
+  _parts: Mesh[] | null = null;
   /**
    * True for a half-space: its body is placed by its normal and offset, not by the mesh, so the
    * mesh's position neither moves the body nor follows it.
@@ -153,9 +165,16 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
   /** @internal The shape of the body in `n` dimensions, the object's scale applied. */
   abstract describeShape(n: number): ShapeDescription;
 
-  /** @internal The body's description at `add`. */
+  /**
+   * @internal The body's description at `add`. Child PhysiN meshes (added to this mesh before it
+   * is added to the scene, as in Physijs) become parts of this mesh's body, placed at their local
+   * position and rotation (`position` and `quaternion`, or `setPositionN` / `rotateInPlane` in
+   * n ≥ 4); the body has this mesh's mass alone, spread over the parts by volume.
+   */
   describeBody(n: number): BodyDescription {
     this.readPoseFromObject();
+    const children = this.children.filter((c): c is Mesh => c instanceof Mesh && c._link === null);
+    this._parts = children.length > 0 ? [this, ...children] : null;
     const mass = this.physics.mass;
     const material = materialOf(this.material);
     let position = this._x!;
@@ -166,12 +185,26 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
       rotor[0] = 1;
     }
     return {
-      shape: this.describeShape(n),
+      shape: this._parts === null ? this.describeShape(n) : this.describeParts(n, children),
       ...(mass > 0 ? { mass, type: 'dynamic' as const } : { type: 'static' as const }),
       position,
       rotor,
       ...(material === null ? {} : { material }),
     };
+  }
+
+  /** The compound of this mesh's shape (at the body's origin) and its child meshes' shapes. */
+  private describeParts(n: number, children: readonly Mesh[]): ShapeDescription {
+    const where = `${this.constructor.name} (a compound body)`;
+    const parts: { shape: ShapeDescription; position?: Float64Array; rotor?: Float64Array }[] = [{ shape: this.describeShape(n) }];
+    for (const child of children) {
+      if (child.dimensions === null) child.setDimensions(n, where);
+      if (child.dimensions !== n)
+        throw new RangeError(`${where}: its child ${child.constructor.name} has ${child.dimensions} dimensions, the scene ${n}`);
+      child.readPoseFromObject();
+      parts.push({ shape: child.describeShape(n), position: child._x!.slice(), rotor: child._R!.slice() });
+    }
+    return { kind: 'compound', parts };
   }
 
   /** @internal Called by the scene once the body exists. */

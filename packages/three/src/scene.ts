@@ -344,7 +344,20 @@ export class Scene extends THREE.Scene<SceneEventMap> {
       const point = Float64Array.from(c.subarray(at + 4, at + 4 + n));
       const normal = Float64Array.from(c.subarray(at + 4 + n, at + 4 + 2 * n));
       const relative = Float64Array.from(c.subarray(at + 4 + 2 * n, at + 4 + 3 * n));
-      a.dispatchEvent({ type: 'collision', phase, other: b, point, normal, relativeVelocity: relative, impulse });
+      // the meshes of the parts that touched (a compound body's child meshes), else the bodies'
+      const partA = a._parts?.[c[at + 4 + 3 * n]! | 0] ?? a;
+      const partB = b._parts?.[c[at + 5 + 3 * n]! | 0] ?? b;
+      a.dispatchEvent({
+        type: 'collision',
+        phase,
+        other: b,
+        point,
+        normal,
+        relativeVelocity: relative,
+        impulse,
+        part: partA,
+        otherPart: partB,
+      });
       b.dispatchEvent({
         type: 'collision',
         phase,
@@ -353,6 +366,8 @@ export class Scene extends THREE.Scene<SceneEventMap> {
         normal: negate(normal),
         relativeVelocity: negate(relative),
         impulse,
+        part: partB,
+        otherPart: partA,
       });
     }
   }

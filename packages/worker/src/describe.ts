@@ -7,6 +7,7 @@
  */
 import {
   Body,
+  Compound,
   ConvexMesh,
   DistanceJoint,
   FixedJoint,
@@ -20,7 +21,7 @@ import {
   SubspaceJoint,
 } from '@physin/engine';
 import type { Dims, Joint, Shape, SubspaceJointOptions } from '@physin/engine';
-import type { BodyDescription, HostId, JointDescription, ShapeDescription } from './types.js';
+import type { BodyDescription, CompoundPartDescription, HostId, JointDescription, ShapeDescription } from './types.js';
 
 const BODY_KEYS = new Set([
   'shape',
@@ -64,11 +65,28 @@ export function buildShape(D: Dims, desc: ShapeDescription, where: string): Shap
       return ConvexMesh(D, desc.vertices, desc.facets);
     case 'triangles':
       return ConvexMesh.fromTriangles(D, desc.positions, desc.indices);
+    case 'compound':
+      return buildCompound(D, desc.parts, where);
     default:
       throw new RangeError(
-        `${where}: unknown shape kind '${String((desc as { kind?: unknown }).kind)}' (known: box, sphere, halfspace, torus, capsule, convex, triangles)`,
+        `${where}: unknown shape kind '${String((desc as { kind?: unknown }).kind)}' (known: box, sphere, halfspace, torus, capsule, convex, triangles, compound)`,
       );
   }
+}
+
+/** Builds a compound from its part descriptions (the engine's `Compound` validates the placements). */
+function buildCompound(D: Dims, parts: unknown, where: string): Shape {
+  if (!Array.isArray(parts)) {
+    throw new TypeError(`${where}: 'shape.parts' of a compound must be an array of { shape, position?, rotor? }, got ${describeValue(parts)}`);
+  }
+  const built = parts.map((part: unknown, i) => {
+    if (!isObject(part) || Array.isArray(part)) {
+      throw new TypeError(`${where}: 'shape.parts'[${i}] must be an object { shape, position?, rotor? }, got ${describeValue(part)}`);
+    }
+    const { shape, ...placement } = part as unknown as CompoundPartDescription;
+    return { ...placement, shape: buildShape(D, shape, `${where} (shape.parts[${i}])`) };
+  });
+  return Compound(D, built);
 }
 
 /** Builds a body from its description. */

@@ -5,7 +5,7 @@
  *   slept count, woke count, report buffers the writer has created so far;
  * - then Float32 body records `id | position (n) | rotor (r) | velocity (n) | momentum (k)`;
  * - then Float32 collision records `phase | idA | idB | impulse | point (n) | normal (n) | relative
- *   velocity (n)`;
+ *   velocity (n) | partA | partB` (the parts of compound bodies that touched; 0 for one shape);
  * - then Int32 ids: the joints broken, the bodies that fell asleep, the bodies that woke.
  *
  * The writer grows the buffer only when a step needs more room than it has (a larger world, a
@@ -32,9 +32,9 @@ export function bodyStride(D: Dims): number {
   return 1 + 2 * D.n + D.r + D.k;
 }
 
-/** Numbers per collision record: 4 + 3n. */
+/** Numbers per collision record: 6 + 3n. */
 export function collisionStride(D: Dims): number {
-  return 4 + 3 * D.n;
+  return 6 + 3 * D.n;
 }
 
 /** The counts of one report. */

@@ -26,8 +26,28 @@ export interface HostOptions {
 /** A host's id of a body or a joint: a non-negative integer assigned on the caller's side. */
 export type HostId = number;
 
+/**
+ * One part of a compound description: a shape (not a half-space or a compound) placed at
+ * `position` (n numbers, default the origin) and turned by `rotor` (r numbers, default identity)
+ * in the coordinates of the compound's body.
+ */
+export interface CompoundPartDescription {
+  readonly shape: ShapeDescription;
+  readonly position?: ArrayLike<number>;
+  readonly rotor?: ArrayLike<number>;
+}
+
 /** A shape, described by its kind and size (the engine's factories, as data). */
 export type ShapeDescription =
+  | {
+      /**
+       * One body of several shapes (the engine's `Compound`): mass properties summed with one
+       * density; collision records name the part by its index in `parts`.
+       */
+      readonly kind: 'compound';
+      /** At least one part. */
+      readonly parts: readonly CompoundPartDescription[];
+    }
   | {
       /** A hyperbox (the engine's `HyperBox`), centred on the body's position. */
       readonly kind: 'box';
@@ -370,7 +390,10 @@ export type CommandName = keyof CommandMap;
  *
  * Collision record c (of `collisionCount`) starts at `c * collisionStride` in `collisions`:
  * `phase (0 begin, 1 end) | idA | idB | impulse | point (n) | normal from A to B (n) | relative
- * velocity of B's point to A's (n)`; the numbers after idB are zeros for an end.
+ * velocity of B's point to A's (n) | partA | partB`; impulse, point, normal and velocity are zeros
+ * for an end. partA and partB name the parts that touched of compound bodies (their index in the
+ * description's `parts`; 0 for a body of one shape): two compounds report one record per pair
+ * of parts.
  */
 export interface StepReport {
   /** Fixed steps the world took for this report (0 for `step(0)`). */
@@ -385,7 +408,7 @@ export interface StepReport {
   readonly bodies: Float32Array;
   /** Count of collision records. */
   readonly collisionCount: number;
-  /** Numbers per collision record: 4 + 3n. */
+  /** Numbers per collision record: 6 + 3n. */
   readonly collisionStride: number;
   /** The collision records. */
   readonly collisions: Float32Array;

@@ -252,6 +252,8 @@ export class WorldCore implements CommandTarget {
         e[at + 4 + n + c] = ev.beginNormal[i * n + c]!;
       }
       this.relativeVelocity(e, at + 4 + 2 * n, A, B, at + 4);
+      e[at + 4 + 3 * n] = ev.beginPartA[i]!;
+      e[at + 5 + 3 * n] = ev.beginPartB[i]!;
     }
     for (let i = 0; i < ev.endCount; i += 1) {
       const at = this.eventCount++ * stride;
@@ -259,6 +261,8 @@ export class WorldCore implements CommandTarget {
       e[at] = 1;
       e[at + 1] = this.idOf(ev.endA[i]!);
       e[at + 2] = this.idOf(ev.endB[i]!);
+      e[at + 4 + 3 * n] = ev.endPartA[i]!;
+      e[at + 5 + 3 * n] = ev.endPartB[i]!;
     }
   }
 

@@ -34,8 +34,8 @@ function kindIndex(kind: ShapeKind): number {
  * Warns (console.warn) the first time a pair of shape kinds with no collider meets, and does
  * nothing after that for the same two kinds in either order. Returns whether it warned now.
  * The supported pairs: sphere–sphere, sphere–box, box–box, and every one of sphere, box, torus,
- * convex mesh against a half-space, torus–sphere, mesh–sphere. Torus–box, torus–torus,
- * torus–mesh, mesh–box and mesh–mesh pass through each other, as the specification says.
+ * convex mesh against a half-space, mesh–sphere, and a torus against every kind (torus-colliders.ts).
+ * Mesh–box and mesh–mesh pass through each other, as the specification says.
  */
 export function warnOnce(kindA: ShapeKind, kindB: ShapeKind): boolean {
   const ia = kindIndex(kindA);

@@ -14,7 +14,11 @@
  *   ring hanging from a fixed ring for 600 steps, a ball resting in a 4D (and 3D) ring: each at
  *   its analytic height within params.penetrationSlop.
  */
-import { describe, expect, it } from 'vitest';
+import { execFileSync } from 'node:child_process';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { ensureBuiltEngine, root } from './support/built-engine.js';
 import { rotorExp } from '@physin/algebra';
 import { Body, ConvexMesh, dims, HyperBox, HyperCapsule, HyperSphere, HyperTorus, World } from '@physin/engine';
 import type { Shape } from '@physin/engine';
@@ -465,3 +469,150 @@ function quarterTurnXY(n: number): Float64Array {
   B[0] = Math.PI / 2;
   return rotorExp(D, new Float64Array(D.r), B);
 }
+
+// ————————————————————————————————————————————— allocation (built engine, child process)
+
+/**
+ * As tests/collision-narrowphase-allocation.test.ts: a child node with a large young generation
+ * collides posed torus pairs of every kind the torus owns (ball, half-space, box, mesh, capsule,
+ * torus; both orders; touching, overlapping and apart; n = 3..6) through collideScratch, warms
+ * up, then measures three windows: none may collect garbage or grow the new space by 64 KB (the
+ * measuring costs about 12 KB). It also reports the mean µs per call of each kind (not asserted).
+ */
+const ALLOCATION_SCRIPT = String.raw`
+import { PerformanceObserver, performance } from 'node:perf_hooks';
+import v8 from 'node:v8';
+const base = process.argv[process.argv.length - 1];
+const E = await import(base + '/internal.js');
+const { collideScratch } = await import(base + '/collision/collide.js');
+const { NARROWPHASE_MARGIN } = await import(base + '/collision/narrowphase-scratch.js');
+const { dims, HyperBox, HyperSphere, HalfSpace, HyperTorus, ConvexMesh, HyperCapsule } = E;
+let seed = 4242;
+const rand = () => {
+  seed = (seed + 0x6d2b79f5) >>> 0;
+  let t = seed;
+  t = Math.imul(t ^ (t >>> 15), t | 1);
+  t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+  return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+};
+function rotation(n) {
+  const M = new Float64Array(n * n);
+  for (let i = 0; i < n * n; i += 1) M[i] = 2 * rand() - 1;
+  for (let c = 0; c < n; c += 1) {
+    for (let p = 0; p < c; p += 1) {
+      let d = 0;
+      for (let i = 0; i < n; i += 1) d += M[i * n + c] * M[i * n + p];
+      for (let i = 0; i < n; i += 1) M[i * n + c] -= d * M[i * n + p];
+    }
+    let l = 0;
+    for (let i = 0; i < n; i += 1) l += M[i * n + c] ** 2;
+    for (let i = 0; i < n; i += 1) M[i * n + c] /= Math.sqrt(l);
+  }
+  return M;
+}
+function crossPolytope(D, s) {
+  const n = D.n;
+  const vertices = [];
+  for (let i = 0; i < n; i += 1) for (const g of [1, -1]) vertices.push(Array.from({ length: n }, (_, c) => (c === i ? g * s : 0)));
+  const facets = [];
+  for (let mask = 0; mask < 1 << n; mask += 1) facets.push(Array.from({ length: n }, (_, i) => 2 * i + ((mask >> i) & 1)));
+  return ConvexMesh(D, vertices, facets);
+}
+const OTHERS = ['ball', 'floor', 'box', 'mesh', 'capsule', 'torus'];
+const sets = [];
+for (let n = 3; n <= 6; n += 1) {
+  const D = dims(n);
+  const up = new Array(n).fill(0);
+  up[1] = 1;
+  const torus = HyperTorus(D, 1, 0.3, [0, 2]);
+  const shapes = {
+    ball: HyperSphere(D, 0.6),
+    floor: HalfSpace(D, up, 0),
+    box: HyperBox(D, Array.from({ length: n }, (_, i) => 0.5 + 0.1 * i)),
+    mesh: crossPolytope(D, 0.8),
+    capsule: HyperCapsule(D, 0.5, 0.3),
+    torus: HyperTorus(D, 0.8, 0.25, [1, 2]),
+  };
+  for (const kind of OTHERS) {
+    const pairs = [];
+    for (let t = 0; t < 8; t += 1) {
+      const pa = E.createPose(n);
+      const pb = E.createPose(n);
+      pa.M.set(rotation(n));
+      pb.M.set(rotation(n));
+      for (let i = 0; i < n; i += 1) pb.x[i] = (rand() - 0.5) * 2.4;
+      // swap every other pair: the other kind as shape A
+      pairs.push(t % 2 === 0 ? { A: torus, pa, B: shapes[kind], pb } : { A: shapes[kind], pa: pb, B: torus, pb: pa });
+    }
+    sets.push({ n, kind, pairs, scratch: E.createNarrowphaseScratch(n), out: E.createManifold(n), time: 0, calls: 0 });
+  }
+}
+let hits = 0;
+function pass(timed) {
+  for (const set of sets) {
+    const t0 = timed ? performance.now() : 0;
+    for (const p of set.pairs) {
+      set.scratch.scalars[NARROWPHASE_MARGIN] = 0.02;
+      if (collideScratch(set.out, set.n, p.A, p.pa, p.B, p.pb, set.scratch)) hits += 1;
+    }
+    if (timed) {
+      set.time += performance.now() - t0;
+      set.calls += set.pairs.length;
+    }
+  }
+}
+const gcs = [];
+const observer = new PerformanceObserver((list) => {
+  for (const entry of list.getEntries()) gcs.push(entry.startTime);
+});
+observer.observe({ entryTypes: ['gc'] });
+for (let w = 0; w < 60; w += 1) pass(false);
+await new Promise((resolve) => setTimeout(resolve, 100));
+for (let w = 0; w < 20; w += 1) pass(true);
+const windows = [];
+for (let w = 0; w < 3; w += 1) {
+  globalThis.gc();
+  globalThis.gc();
+  await new Promise((resolve) => setTimeout(resolve, 50));
+  const before = v8.getHeapSpaceStatistics().find((s) => s.space_name === 'new_space').space_used_size;
+  const t0 = performance.now();
+  for (let p = 0; p < 20; p += 1) pass(false);
+  const t1 = performance.now();
+  const after = v8.getHeapSpaceStatistics().find((s) => s.space_name === 'new_space').space_used_size;
+  windows.push({ newSpace: after - before, collections: gcs.filter((g) => g >= t0 && g <= t1).length });
+}
+observer.disconnect();
+const cost = {};
+for (const s of sets) cost[s.n + 'D ' + s.kind] = +((1000 * s.time) / s.calls).toFixed(2);
+console.log(JSON.stringify({ hits, windows, cost }));
+`;
+
+describe('torus pairs allocate nothing in steady state (built engine, child process)', () => {
+  let result: { hits: number; windows: { newSpace: number; collections: number }[]; cost: Record<string, number> };
+  beforeAll(() => {
+    ensureBuiltEngine();
+    const out = execFileSync(
+      process.execPath,
+      [
+        '--expose-gc',
+        '--max-semi-space-size=256',
+        '--min-semi-space-size=64',
+        '--input-type=module',
+        '-e',
+        ALLOCATION_SCRIPT,
+        pathToFileURL(join(root, 'packages/engine/dist')).href,
+      ],
+      { cwd: root, encoding: 'utf8' },
+    );
+    result = JSON.parse(out.trim().split('\n').pop()!) as typeof result;
+  });
+
+  it('torus against every kind, both orders, n = 3..6', () => {
+    expect(result.hits).toBeGreaterThan(0);
+    expect(result.windows.length).toBe(3);
+    for (const w of result.windows) {
+      expect(w.collections).toBe(0);
+      expect(w.newSpace).toBeLessThan(64 * 1024);
+    }
+  });
+});

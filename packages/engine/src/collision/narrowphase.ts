@@ -35,6 +35,7 @@ export { collideSphereHalfSpace } from './sphere-halfspace.js';
 export { collideSphereSphere } from './sphere-sphere.js';
 export { collideTorusHalfSpace } from './torus-halfspace.js';
 export { collideTorusSphere } from './torus-sphere.js';
+export { collideTorusOther } from './torus-pairs.js';
 export { collideMeshHalfSpace } from './mesh-halfspace.js';
 export { collideMeshSphere, MESH_INSIDE_ID } from './mesh-sphere.js';
 export { closestPointOnSimplex } from './simplex-closest.js';

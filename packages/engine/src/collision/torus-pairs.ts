@@ -82,7 +82,27 @@ const INV_PHI = (Math.sqrt(5) - 1) / 2;
  */
 const MIN_COS = 0.2;
 
-/** Torus (A) – box (B). */
+/**
+ * Contacts between a torus (A) and a box, a convex mesh, a capsule or a torus (B), normal from A
+ * to B (see the module comment), with the margin as an argument. Unchecked; allocates nothing
+ * once the scratch has grown.
+ */
+export function collideTorusOther(
+  out: Manifold,
+  n: number,
+  a: CollisionTorus,
+  poseA: Pose,
+  b: CollisionBox | CollisionMesh | CollisionCapsule | CollisionTorus,
+  poseB: Pose,
+  margin: number,
+  scratch: NarrowphaseScratch,
+): boolean {
+  scratch.scalars[NARROWPHASE_MARGIN] = margin;
+  const kind = b.kind === 'box' ? KIND_BOX : b.kind === 'mesh' ? KIND_MESH : b.kind === 'capsule' ? KIND_CAPSULE : KIND_TORUS;
+  return torusPair(out, n, a, poseA, b, poseB, scratch, kind);
+}
+
+/** Torus (A) – box (B), the margin read from scratch.scalars[NARROWPHASE_MARGIN] (pair-kernel.ts). */
 export function collideTorusBoxKernel(
   out: Manifold,
   n: number,
@@ -95,7 +115,7 @@ export function collideTorusBoxKernel(
   return torusPair(out, n, a, poseA, b, poseB, scratch, KIND_BOX);
 }
 
-/** Torus (A) – convex mesh (B). */
+/** Torus (A) – convex mesh (B), as {@link collideTorusBoxKernel}. */
 export function collideTorusMeshKernel(
   out: Manifold,
   n: number,
@@ -108,7 +128,7 @@ export function collideTorusMeshKernel(
   return torusPair(out, n, a, poseA, b, poseB, scratch, KIND_MESH);
 }
 
-/** Torus (A) – capsule (B). */
+/** Torus (A) – capsule (B), as {@link collideTorusBoxKernel}. */
 export function collideTorusCapsuleKernel(
   out: Manifold,
   n: number,
@@ -121,7 +141,7 @@ export function collideTorusCapsuleKernel(
   return torusPair(out, n, a, poseA, b, poseB, scratch, KIND_CAPSULE);
 }
 
-/** Torus (A) – torus (B). */
+/** Torus (A) – torus (B), as {@link collideTorusBoxKernel}. */
 export function collideTorusTorusKernel(
   out: Manifold,
   n: number,

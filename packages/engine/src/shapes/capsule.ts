@@ -63,7 +63,7 @@ export function capsuleMoments(
  * `radius` of the segment from −halfHeight·e₁ to +halfHeight·e₁ (local axis 1). Dimensions come
  * first, as in every shape factory.
  *
- * Mass properties in n dimensions (see {@link capsuleMoments}): volume 2h·V_(n−1)(r) + V_n(r);
+ * Mass properties in n dimensions (derived in `capsuleMoments`, shapes/capsule.ts): volume 2h·V_(n−1)(r) + V_n(r);
  * covariance along axis 1 m·[V_(n−1)·2h³/3 + h²V_n + 4hV_(n−1)r²/(n+1) + V_n r²/(n+2)]/V, across
  * it m·[2hV_(n−1)r²/(n+1) + V_n r²/(n+2)]/V.
  *

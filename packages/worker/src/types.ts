@@ -32,8 +32,11 @@ export type HostId = number;
  * in the coordinates of the compound's body.
  */
 export interface CompoundPartDescription {
+  /** The part's shape: any description but a half-space or a compound. */
   readonly shape: ShapeDescription;
+  /** Where the part's origin sits in the body's coordinates (m, n numbers); default the origin. */
   readonly position?: ArrayLike<number>;
+  /** The part's orientation in the body's coordinates (a unit rotor, r numbers); default identity. */
   readonly rotor?: ArrayLike<number>;
 }
 

@@ -329,6 +329,40 @@ describe('torus pairs against brute force', () => {
   }
 });
 
+describe('torus pairs: contact sets of several points', () => {
+  it('a ring over a square bar touches its two top edges: two points, one normal straight down (3D, 4D, 5D)', () => {
+    for (const n of [3, 4, 5]) {
+      const scratch = createNarrowphaseScratch(n);
+      const out = createManifold(n);
+      const R = 1;
+      const r = 0.2;
+      const a = 0.4;
+      const half = new Float64Array(n).fill(2);
+      half[0] = a;
+      half[1] = 0.2;
+      const bar = { kind: 'box', halfExtents: half } as never as CollidableShape;
+      const poseBar = createPose(n);
+      poseBar.x[1] = -0.2; // top face at y = 0
+      const ring = torusShape(R, r, 0, 1);
+      const y = -Math.sqrt((R - r) ** 2 - a * a);
+      const delta = 0.004; // sunk by 4 mm
+      const poseRing = createPose(n);
+      poseRing.x[1] = y - delta;
+      expect(collide(out, n, ring, poseRing, bar, poseBar, 0.02, scratch)).toBe(true);
+      expect(out.count).toBe(2);
+      expect(Math.abs(out.normal[1]! + 1)).toBeLessThanOrEqual(1e-12);
+      // each edge's own normal is at cos α = |y| / (R − r) from the vertical; its gap, measured along
+      // the vertical, is the sinking itself to first order: −δ (within δ²/(R − r))
+      for (let p = 0; p < 2; p += 1) expect(Math.abs(out.separations[p]! + delta)).toBeLessThanOrEqual(delta ** 2 / (R - r));
+      // the points lie midway between the tube and the edges: within δ/2 of the edges (±a, 0)
+      const xs = [out.points[0]!, out.points[n]!].sort((u, v) => u - v);
+      expect(Math.abs(xs[0]! + a)).toBeLessThanOrEqual(delta / 2);
+      expect(Math.abs(xs[1]! - a)).toBeLessThanOrEqual(delta / 2);
+      expect(Math.abs(out.points[1]!)).toBeLessThanOrEqual(delta / 2);
+    }
+  });
+});
+
 // ————————————————————————————————————————————— rest in a World
 
 function world(n: number): World {

@@ -512,6 +512,12 @@ describe('resting manifolds have two points', () => {
         expect(Math.abs(out.points[0]! - out.points[n]!)).toBeCloseTo(1, 12);
         expect(out.normal[1]).toBeCloseTo(-1, 12);
         expect(out.ids[0]).not.toBe(out.ids[1]);
+        // the same features after a small slide: the same ids (warm starting)
+        const ids = Array.from(out.ids.subarray(0, 2));
+        pa.x[0] += 1e-3;
+        expect(collide(out, n, cap, pa, B, pb, MARGIN, scratch)).toBe(true);
+        expect(Array.from(out.ids.subarray(0, 2))).toEqual(ids);
+        pa.x[0] -= 1e-3;
       };
       check(ground, pg, -0.001);
       // a box and a cube mesh whose top face is y = 0
@@ -744,6 +750,52 @@ describe('capsules at rest in a World (3D, 4D)', () => {
       let speed = 0;
       for (const v of box.v) speed += v * v;
       expect(Math.sqrt(speed)).toBeLessThan(1e-3);
+    });
+  }
+});
+
+describe('a capsule rolls down a slope as the analytic solid of revolution (3D, 4D)', () => {
+  for (const n of [3, 4]) {
+    it(`n = ${n}: distance after 1 s = a·dt²·N(N+1)/2 with a = g sin θ / (1 + I/(m r²)), I = 2m·C_across (1e-9 relative)`, () => {
+      const D = dims(n);
+      const theta = (15 * Math.PI) / 180;
+      const g = 9.81;
+      // the slope's outward normal (sin θ, cos θ, 0, …): downhill is along (cos θ, −sin θ, 0, …)
+      const N = Array.from({ length: n }, (_, i) => (i === 0 ? Math.sin(theta) : i === 1 ? Math.cos(theta) : 0));
+      const down = Array.from({ length: n }, (_, i) => (i === 0 ? Math.cos(theta) : i === 1 ? -Math.sin(theta) : 0));
+      const world = new World({
+        dimensions: n,
+        gravity: Array.from({ length: n }, (_, i) => (i === 1 ? -g : 0)),
+        params: { allowSleep: false },
+      });
+      world.addBody(new Body(D, { shape: HalfSpace(D, N, 0), mass: 0 }));
+      const h = 0.5;
+      const r = 0.2;
+      // the axis along z (local y turned onto axis 2), resting on the slope: it rolls without slipping (μ = 0.5 > tan θ·…)
+      const body = world.addBody(
+        new Body(D, {
+          shape: HyperCapsule(D, h, r),
+          mass: 1,
+          position: N.map((v) => v * r),
+          rotor: rotorFromPlane(D, new Float64Array(D.r), 1, 2, Math.PI / 2),
+        }),
+      );
+      const x0 = Float64Array.from(body.x);
+      const steps = 60;
+      const dt = 1 / 60;
+      for (let s = 0; s < steps; s += 1) world.step(dt);
+      const travelled = dot(
+        Array.from(body.x, (v, i) => v - x0[i]!),
+        down,
+      );
+      // the rotation of rolling is in the plane of two axes across the capsule: I = C_ii + C_jj = 2 m C_across
+      const I = 2 * capsuleMoments(n, h, r).across;
+      const a = (g * Math.sin(theta)) / (1 + I / (r * r));
+      // symplectic Euler from rest: x_N = a·dt²·N(N + 1)/2
+      const expected = (a * dt * dt * steps * (steps + 1)) / 2;
+      expect(Math.abs(travelled - expected) / expected).toBeLessThan(1e-9);
+      // it stays on the slope: the height of its axis above the plane is r
+      expect(Math.abs(dot(body.x, N) - r)).toBeLessThan(1e-9);
     });
   }
 });

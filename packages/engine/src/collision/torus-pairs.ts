@@ -196,6 +196,13 @@ function torusPair(
     V[c] = R * v;
     tLen2 += t * t;
   }
+  // the whole torus lies within R + r of its centre: farther than that (plus B's radius and the
+  // margin) from B's core, nothing touches
+  scalars[S_GAP] = a.minorRadius + R + margin;
+  if (farApart(n, kind, b, T, scratch)) {
+    out.count = 0;
+    return false;
+  }
   const ps = polytopeScratch(scratch);
   const K = scratch.torusRingPoints;
   const S = SAMPLES_PER_RING_POINT * K;
@@ -262,6 +269,48 @@ function torusPair(
     addCandidate(cand, n, a, poseB, ps, scratch, k);
   }
   return assembleTorusManifold(out, n, cand, ps, S, MB, scratch);
+}
+
+/**
+ * Whether B's core is farther than scalars[S_GAP] (+ B's radius) from the point T (B's frame): a
+ * lower bound of the distance (the mesh: its farthest facet plane). Uses scratch.t.
+ */
+function farApart(n: number, kind: number, b: Other, T: Float64Array, scratch: NarrowphaseScratch): boolean {
+  const reach = scratch.scalars[S_GAP];
+  let d2 = 0;
+  if (kind === KIND_BOX) {
+    const h = (b as CollisionBox).halfExtents;
+    for (let c = 0; c < n; c += 1) {
+      const e = Math.abs(T[c]) - h[c];
+      if (e > 0) d2 += e * e;
+    }
+    return d2 > reach * reach;
+  }
+  if (kind === KIND_MESH) {
+    const mesh = b as CollisionMesh;
+    const FN = mesh.facetNormals;
+    const FO = mesh.facetOffsets;
+    for (let f = 0; f < FO.length; f += 1) {
+      let s = -FO[f];
+      for (let c = 0; c < n; c += 1) s += FN[f * n + c] * T[c];
+      if (s > reach) return true;
+    }
+    return false;
+  }
+  if (kind === KIND_CAPSULE) {
+    const cap = b as CollisionCapsule;
+    const hh = cap.halfHeight;
+    for (let c = 0; c < n; c += 1) {
+      const e = c === 1 ? Math.abs(T[c]) - hh : T[c];
+      if (c !== 1 || e > 0) d2 += e * e;
+    }
+    const far = reach + cap.radius;
+    return d2 > far * far;
+  }
+  const tor = b as CollisionTorus;
+  for (let c = 0; c < n; c += 1) d2 += T[c] * T[c];
+  const far = reach + tor.majorRadius + tor.minorRadius;
+  return d2 > far * far;
 }
 
 /**
@@ -510,6 +559,7 @@ function evalGap(n: number, kind: number, a: CollisionTorus, b: Other, ps: Polyt
     if (kind === KIND_TORUS) {
       const tor = b as CollisionTorus;
       while (free === tor.planeI || free === tor.planeJ) free += 1;
+      if (free >= n) free = tor.planeI; // n = 2: the plane is all there is
     }
     for (let c = 0; c < n; c += 1) Nn[c] = 0;
     Nn[free] = 1;

@@ -14,10 +14,10 @@
  * - Manifolds of resting cases: 2 points for a capsule lying on a half-space, a box, a convex
  *   mesh and on another capsule.
  * - Ray casts against the analytic hits and a bisection on the distance to the core segment.
- * - Rest heights in a World (3D and 4D). (The kernels' allocation: tests/collision-narrowphase-allocation.test.ts.)
+ * - In a World (3D and 4D): rest heights, rolling down a slope, a heap in a bin of boxes, snapshots. (The kernels' allocation: tests/collision-narrowphase-allocation.test.ts.)
  */
 import { describe, expect, it } from 'vitest';
-import { rotorFromPlane } from '@physin/algebra';
+import { rotorFromPlane, rotorToMatrix } from '@physin/algebra';
 import {
   Body,
   ConvexMesh,
@@ -796,6 +796,93 @@ describe('a capsule rolls down a slope as the analytic solid of revolution (3D, 
       expect(Math.abs(travelled - expected) / expected).toBeLessThan(1e-9);
       // it stays on the slope: the height of its axis above the plane is r
       expect(Math.abs(dot(body.x, N) - r)).toBeLessThan(1e-9);
+    });
+  }
+});
+
+describe('a heap of capsules (3D, 4D)', () => {
+  /** The distance between two segments p0 + s·(p1 − p0), q0 + t·(q1 − q0), by nested ternary search (convex in s and t). */
+  function segmentDistance(p0: number[], p1: number[], q0: number[], q1: number[]): number {
+    const at = (a: number[], b: number[], s: number) => a.map((v, i) => v + s * (b[i]! - v));
+    const inner = (p: number[]) => {
+      let lo = 0;
+      let hi = 1;
+      const f = (t: number) => Math.hypot(...at(q0, q1, t).map((v, i) => v - p[i]!));
+      for (let k = 0; k < 100; k += 1) {
+        const m1 = lo + (hi - lo) / 3;
+        const m2 = hi - (hi - lo) / 3;
+        if (f(m1) < f(m2)) hi = m2;
+        else lo = m1;
+      }
+      return f((lo + hi) / 2);
+    };
+    let lo = 0;
+    let hi = 1;
+    for (let k = 0; k < 100; k += 1) {
+      const m1 = lo + (hi - lo) / 3;
+      const m2 = hi - (hi - lo) / 3;
+      if (inner(at(p0, p1, m1)) < inner(at(p0, p1, m2))) hi = m2;
+      else lo = m1;
+    }
+    return inner(at(p0, p1, (lo + hi) / 2));
+  }
+
+  for (const n of [3, 4]) {
+    it(`n = ${n}: capsules dropped in a bin of boxes neither sink into the floor nor into each other (within 2 slops)`, () => {
+      const D = dims(n);
+      const slop = defaultParams.penetrationSlop;
+      const world = new World({ dimensions: n, gravity: Array.from({ length: n }, (_, i) => (i === 1 ? -9.81 : 0)) });
+      world.addBody(
+        new Body(D, {
+          shape: HalfSpace(
+            D,
+            Array.from({ length: n }, (_, i) => (i === 1 ? 1 : 0)),
+            0,
+          ),
+          mass: 0,
+        }),
+      );
+      // a bin: two static box walls across every horizontal axis, 1.6 m apart
+      for (let axis = 0; axis < n; axis += 1) {
+        if (axis === 1) continue;
+        for (const side of [-1, 1]) {
+          const half = Array.from({ length: n }, (_, c) => (c === axis ? 0.5 : c === 1 ? 3 : 1.3));
+          const position = Array.from({ length: n }, (_, c) => (c === axis ? side * 1.3 : c === 1 ? 3 : 0));
+          world.addBody(new Body(D, { shape: HyperBox(D, half), mass: 0, position }));
+        }
+      }
+      const rand = seeded(5150 + n);
+      const count = n === 3 ? 24 : 16;
+      const bodies: { body: Body; h: number; r: number }[] = [];
+      for (let k = 0; k < count; k += 1) {
+        const h = uniform(rand, 0.15, 0.4);
+        const r = uniform(rand, 0.1, 0.2);
+        const position = Array.from({ length: n }, (_, i) => (i === 1 ? 0.5 + 0.45 * k : uniform(rand, -0.25, 0.25)));
+        const rotor = rotorFromPlane(D, new Float64Array(D.r), 1, 2 + (k % (n - 2)), uniform(rand, -Math.PI, Math.PI));
+        bodies.push({ body: world.addBody(new Body(D, { shape: HyperCapsule(D, h, r), mass: 1, position, rotor })), h, r });
+      }
+      for (let s = 0; s < 300; s += 1) world.step(1 / 60);
+      const ends = bodies.map(({ body, h }) => {
+        const M = rotorToMatrix(D, new Float64Array(n * n), body.R);
+        const axis = Array.from({ length: n }, (_, i) => M[i * n + 1]!);
+        return [Array.from(body.x, (v, i) => v - h * axis[i]!), Array.from(body.x, (v, i) => v + h * axis[i]!)];
+      });
+      let floor = Infinity;
+      let between = Infinity;
+      for (let a = 0; a < count; a += 1) {
+        const [p0, p1] = ends[a]!;
+        floor = Math.min(floor, Math.min(p0![1]!, p1![1]!) - bodies[a]!.r);
+        for (let b = a + 1; b < count; b += 1) {
+          const [q0, q1] = ends[b]!;
+          between = Math.min(between, segmentDistance(p0!, p1!, q0!, q1!) - bodies[a]!.r - bodies[b]!.r);
+        }
+      }
+      if (process.env.CAPSULE_FIGURES)
+        console.log(`n = ${n} heap: deepest into the floor ${-floor}, between capsules ${-between}`);
+      expect(floor).toBeGreaterThan(-2 * slop);
+      expect(between).toBeGreaterThan(-2 * slop);
+      // every capsule is still in the bin (its walls' inner faces at ±0.8)
+      for (const { body } of bodies) for (let i = 0; i < n; i += 1) if (i !== 1) expect(Math.abs(body.x[i]!)).toBeLessThan(0.8);
     });
   }
 });

@@ -28,6 +28,8 @@ import {
   HyperSphere,
   World,
   defaultParams,
+  castRay,
+  queryBox,
   restoreWorld,
   snapshotWorld,
 } from '@physin/engine';
@@ -654,6 +656,45 @@ describe('ray casts against a capsule', () => {
     }
     expect(hits).toBeGreaterThan(300);
   });
+});
+
+describe('world queries find capsules (3D, 4D)', () => {
+  for (const n of [3, 4]) {
+    it(`n = ${n}: castRay hits a turned capsule body where the analytic cast does; queryBox finds it by its bounds`, () => {
+      const D = dims(n);
+      const world = new World({ dimensions: n });
+      const h = 0.5;
+      const r = 0.2;
+      // lying along x at (1, 2, 0, …)
+      const body = world.addBody(
+        new Body(D, {
+          shape: HyperCapsule(D, h, r),
+          mass: 0,
+          position: Array.from({ length: n }, (_, i) => (i === 0 ? 1 : i === 1 ? 2 : 0)),
+          rotor: rotorFromPlane(D, new Float64Array(D.r), 0, 1, Math.PI / 2),
+        }),
+      );
+      world.step(1 / 60);
+      // straight down onto the cap's side at x = 1.6: the cap's ball (centre x = 1.5) is hit at y = 2 + √(r² − 0.1²)
+      const origin = Array.from({ length: n }, (_, i) => (i === 0 ? 1.6 : i === 1 ? 5 : 0));
+      const down = Array.from({ length: n }, (_, i) => (i === 1 ? -1 : 0));
+      const hit = castRay(world, origin, down, 10);
+      expect(hit).not.toBeNull();
+      expect(hit!.body).toBe(body);
+      expect(hit!.distance).toBeCloseTo(3 - Math.sqrt(r * r - 0.01), 12);
+      expect(hit!.normal[0]).toBeCloseTo(0.1 / r, 12);
+      // its bounds: x in [1 − h − r, 1 + h + r], y in [2 − r, 2 + r]
+      const box = (lo: number[], hi: number[]) => queryBox(world, lo, hi);
+      const at = (x: number, y: number, e: number) => [
+        Array.from({ length: n }, (_, i) => (i === 0 ? x - e : i === 1 ? y - e : -e)),
+        Array.from({ length: n }, (_, i) => (i === 0 ? x + e : i === 1 ? y + e : e)),
+      ];
+      expect(box(...(at(1.69, 2, 0.001) as [number[], number[]]))).toEqual([body]);
+      expect(box(...(at(1.72, 2, 0.001) as [number[], number[]]))).toEqual([]);
+      expect(box(...(at(1, 2.19, 0.001) as [number[], number[]]))).toEqual([body]);
+      expect(box(...(at(1, 2.22, 0.001) as [number[], number[]]))).toEqual([]);
+    });
+  }
 });
 
 /** A rotor turning local axis 1 (y) onto axis 0 (x): the capsule lies along x. */

@@ -24,6 +24,7 @@ import { describe, expect, it } from 'vitest';
 import {
   Body,
   Compound,
+  ConvexMesh,
   HalfSpace,
   HyperBox,
   HyperCapsule,
@@ -178,6 +179,55 @@ describe('Compound mass properties: the analytic sums', () => {
       for (let i = 0; i < n; i += 1) expect(Math.abs(back[i]!)).toBeLessThan(1e-14);
     });
   }
+});
+
+describe('a convex mesh part keeps its own principal frame', () => {
+  it('n = 3: a compound of one off-centre, turned mesh is placed, weighed and turned as the mesh alone', () => {
+    const D = dims(3);
+    // a lopsided wedge far from its own origin: the mesh moves itself into its principal frame
+    const mesh = ConvexMesh(
+      D,
+      [
+        [2, 1, 0],
+        [4, 1, 0],
+        [2, 2.5, 0],
+        [2, 1, 0.7],
+        [4, 1, 0.7],
+        [2, 2.5, 0.7],
+      ],
+      [
+        [0, 2, 1],
+        [3, 4, 5],
+        [0, 1, 4],
+        [0, 4, 3],
+        [0, 3, 5],
+        [0, 5, 2],
+        [1, 2, 5],
+        [1, 5, 4],
+      ],
+    );
+    const turn = new Float64Array(D.r);
+    rotorFromPlane(D, turn, 0, 2, 0.7);
+    const place = [0.3, -0.2, 0.5];
+    const whole = Compound(D, [{ shape: mesh, position: place, rotor: turn }]);
+    const a = new Body(D, { shape: mesh, mass: 2, position: [1, 2, 3] });
+    const b = new Body(D, { shape: whole, mass: 2, position: [1, 2, 3] });
+    // b's part sits where a's mesh would with the placement applied: compare through the
+    // mesh's centre, x + R·(place + turn·frameOffset)
+    const centre = new Float64Array(3);
+    D.kernels.applyVector(centre, turn, Float64Array.from(mesh.frameOffset));
+    for (let i = 0; i < 3; i += 1) expect(Math.abs(b.x[i]! - (i + 1 + place[i]! + centre[i]!))).toBeLessThan(1e-13);
+    // the same principal moments
+    const ia = Array.from(a.inertia).sort((x, y) => x - y);
+    const ib = Array.from(b.inertia).sort((x, y) => x - y);
+    for (let p = 0; p < 3; p += 1) expect(Math.abs(ia[p]! - ib[p]!) / ia[p]!).toBeLessThan(1e-12);
+    // a ray down through the centre of mass (inside the convex part) hits the part
+    const world = new World({ dimensions: 3 });
+    world.addBody(b);
+    const hit = castRay(world, [b.x[0]!, 10, b.x[2]!], [0, -1, 0], 20);
+    expect(hit).not.toBeNull();
+    expect(hit!.part).toBe(0);
+  });
 });
 
 /** A world with a floor half-space (y <= 0) and a dumbbell lying on it, its axis along z, rolling along x. */

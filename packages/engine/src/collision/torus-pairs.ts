@@ -17,8 +17,9 @@
  * a contact (id S + k); a minimum whose bracket is flat within featureTieTolerance (a torus lying
  * flat on a face, where the whole circle is equally near) is not refined, and the body-fixed ring
  * samples (id k, each below the margin) carry the contact instead, spread round the circle so the
- * torus rests still; a sample beside a refined minimum (the nearest one to it) is left out, as in
- * torus–half-space.
+ * torus rests still; the samples within two of a refined minimum's bracket are left out (as
+ * torus–half-space leaves out the ring point beside its exact one): on a curved surface their own
+ * normals lean away from the minimum's and would tilt the common normal.
  *
  * **One normal.** A manifold has one normal (manifold.ts), but a ring's contacts need not share
  * one (a ball in a ring touches the tube round a whole circle, a ring hanging over a box touches
@@ -254,10 +255,9 @@ function torusPair(
     if (seen) continue;
     gaps[3 * S + found] = theta;
     found += 1;
-    // the sample nearest the minimum is left out
-    let near = Math.round((theta * S) / (2 * Math.PI)) % S;
-    if (near < 0) near += S;
-    skip[near] = 1;
+    // the samples of the span searched are left out: on a curved surface their own normals lean
+    // away from the minimum's and would tilt the common normal (a ring lying across a ring slid off)
+    for (let q = k - 2; q <= k + 2; q += 1) skip[(q + S) % S] = 1;
     if (!(gm < margin)) continue;
     addCandidate(cand, n, a, poseB, ps, scratch, S + k);
   }

@@ -343,6 +343,7 @@ export class Body {
   get collisionGroup(): number {
     return this.groupBits;
   }
+  /** Sets the groups the body belongs to (see the getter); wakes the body. */
   set collisionGroup(value: number) {
     this.groupBits = checkGroupBits('Body.collisionGroup', "value 'collisionGroup'", value);
     this.wake();
@@ -355,6 +356,7 @@ export class Body {
   get collisionMask(): number {
     return this.maskBits;
   }
+  /** Sets the groups the body collides with (see the getter); wakes the body. */
   set collisionMask(value: number) {
     this.maskBits = checkGroupBits('Body.collisionMask', "value 'collisionMask'", value);
     this.wake();
@@ -368,6 +370,7 @@ export class Body {
   get sensor(): boolean {
     return this.sensorFlag;
   }
+  /** Makes the body a sensor or a solid body again (see the getter); wakes the body. */
   set sensor(value: boolean) {
     this.sensorFlag = checkSensorFlag('Body.sensor', "value 'sensor'", value);
     this.wake();

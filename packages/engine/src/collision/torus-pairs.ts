@@ -637,5 +637,67 @@ export function assembleTorusManifold(
     for (let c = 0; c < n; c += 1) s += M[i * n + c] * N[c];
     W[i] = s;
   }
-  return reduceCandidates(out, n, cand, W, scratch);
+  if (kept <= out.capacity) return reduceCandidates(out, n, cand, W, scratch);
+  return reduceByDepthAndSpread(out, n, cand, W, scratch);
+}
+
+/**
+ * Keeps `out.capacity` of the candidates (more than that), normal `W`: the deepest first (ties
+ * within featureTieTolerance to the lowest id, as reduceCandidates), then, repeatedly, the one
+ * whose squared tangent distance to the nearest point kept so far, times its depth weight
+ * (band − (separation − deepest))/band, is largest. Plain farthest-point order would take the
+ * shallow ring samples spread round a flat pair (a ring lying on a ring, just off centre) before
+ * the second, equally deep crossing of the two rings, which then goes unsupported and sinks.
+ */
+function reduceByDepthAndSpread(out: Manifold, n: number, cand: Manifold, W: Float64Array, scratch: NarrowphaseScratch): boolean {
+  // (the band as in assembleTorusManifold, read here: a double argument would be boxed)
+  const band = Math.max(scratch.scalars[NARROWPHASE_MARGIN], scratch.featureTieTolerance);
+  const distance = scratch.reduceDistance;
+  const count = cand.count;
+  const cap = out.capacity;
+  const seps = cand.separations;
+  const ids = cand.ids;
+  const pts = cand.points;
+  for (let c = 0; c < n; c += 1) out.normal[c] = W[c];
+  let deepest = 0;
+  for (let p = 1; p < count; p += 1) if (seps[p] < seps[deepest]) deepest = p;
+  const lowest = seps[deepest];
+  const tie = lowest + scratch.featureTieTolerance;
+  for (let p = 0; p < count; p += 1) if (seps[p] <= tie && ids[p] < ids[deepest]) deepest = p;
+  for (let p = 0; p < count; p += 1) distance[p] = Infinity;
+  let chosen = deepest;
+  let kept = 0;
+  while (kept < cap) {
+    for (let c = 0; c < n; c += 1) out.points[kept * n + c] = pts[chosen * n + c];
+    out.separations[kept] = seps[chosen];
+    out.ids[kept] = ids[chosen];
+    kept += 1;
+    distance[chosen] = -1;
+    if (kept === cap) break;
+    const o = chosen * n;
+    let next = -1;
+    let best = 0;
+    for (let p = 0; p < count; p += 1) {
+      if (distance[p] < 0) continue;
+      let d2 = 0;
+      let along = 0;
+      for (let c = 0; c < n; c += 1) {
+        const delta = pts[p * n + c] - pts[o + c];
+        d2 += delta * delta;
+        along += delta * W[c];
+      }
+      d2 -= along * along;
+      if (d2 < distance[p]) distance[p] = d2;
+      const w = band - (seps[p] - lowest);
+      const score = w > 0 ? distance[p] * w : 0;
+      if (score > best) {
+        best = score;
+        next = p;
+      }
+    }
+    if (next < 0) break;
+    chosen = next;
+  }
+  out.count = kept;
+  return true;
 }

@@ -31,6 +31,12 @@ export const pages: readonly ExamplePage[] = [
     summary: 'Two solid 4D tori: lift one in w, slide it along x, bring it back, and they are linked without a cut.',
   },
   {
+    dir: 'shapes',
+    title: 'Every shape touches every shape',
+    summary:
+      'A capsule pile, a dumbbell of three meshes whose events name the part, a hanging chain of tori, icosahedra through a sensor, boxes that pass through one another.',
+  },
+  {
     dir: 'plugin',
     title: 'The five steps',
     summary: "Physijs's interface in PhysiN: a stack of boxes, a ball thrown at it, an octahedron read from its geometry.",

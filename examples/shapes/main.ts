@@ -37,15 +37,35 @@ const floor = new PlaneMesh(new THREE.BoxGeometry(40, 0.2, 40).translate(0, -0.1
 floor.name = 'the floor';
 scene.add(floor);
 
-// --- 1. a pile of capsules -----------------------------------------------------------------------
+// --- 1. a pile of capsules in a bin -------------------------------------------------------------
 // CapsuleMesh takes its radius and straight length from the CapsuleGeometry's parameters.
 const capsuleGeometry = new THREE.CapsuleGeometry(0.2, 0.7, 4, 12);
 const capsuleColours = [0x2a9d8f, 0x3d8bbf, 0x6b9e4e];
+const BIN = { x: -5, z: 0.8, inner: 2.2, wall: 0.15, height: 0.7 };
+const binLook = material(0xb0b8c2, 0.8, 0.1);
+for (const [dx, dz, wx, wz] of [
+  [-1, 0, BIN.wall, BIN.inner + 2 * BIN.wall],
+  [1, 0, BIN.wall, BIN.inner + 2 * BIN.wall],
+  [0, -1, BIN.inner, BIN.wall],
+  [0, 1, BIN.inner, BIN.wall],
+] as const) {
+  const wall = new BoxMesh(new THREE.BoxGeometry(wx, BIN.height, wz), binLook, 0);
+  wall.name = 'the bin';
+  const off = (BIN.inner + BIN.wall) / 2;
+  wall.position.set(BIN.x + dx * off, BIN.height / 2, BIN.z + dz * off);
+  scene.add(wall);
+}
 for (let i = 0; i < 15; i += 1) {
   const capsule = new CapsuleMesh(capsuleGeometry, material(capsuleColours[i % 3]!, 0.6, 0.1), 1);
   capsule.name = `capsule ${i + 1}`;
-  capsule.position.set(-6 + (random() - 0.5) * 1.2, 0.6 + i * 0.55, (random() - 0.5) * 1.2);
-  capsule.rotation.set(random() * Math.PI, random() * Math.PI, 0);
+  // layers of three side by side, each layer turned its own way, dropped into the bin
+  const layer = Math.floor(i / 3);
+  const yaw = layer * 1.1 + random() * 0.4;
+  const across = ((i % 3) - 1) * 0.5;
+  capsule.position.set(BIN.x + across * Math.cos(yaw), 0.5 + layer * 0.6, BIN.z - across * Math.sin(yaw));
+  // a capsule's axis is its y: lay it down (a quarter turn about x), then turn it by the layer's yaw
+  capsule.rotation.set(Math.PI / 2 + (random() - 0.5) * 0.2, 0, 0);
+  capsule.rotateOnWorldAxis(new THREE.Vector3(0, 1, 0), yaw);
   scene.add(capsule);
 }
 
@@ -59,13 +79,13 @@ const ghosts: Mesh[] = [];
 for (let i = 0; i < 5; i += 1) {
   const solid = new BoxMesh(boxGeometry, material(i % 2 === 0 ? 0x8e99a6 : 0x66717e, 0.7, 0), 1);
   solid.name = `box ${i + 1}`;
-  solid.position.set(-3.6, 0.4 + i * 1.4, 0);
+  solid.position.set(-3.4, 0.4 + i * 1.4, -1.2);
   scene.add(solid);
   solids.push(solid);
   const ghost = new BoxMesh(boxGeometry, material(0xd9534f, 0.7, 0, { transparent: true, opacity: 0.55, depthWrite: false }), 1);
   ghost.name = `ghost ${i + 1}`;
   // a little apart in x, so the boxes that end up inside one another can be told apart
-  ghost.position.set(-2.2 + i * 0.08, 0.4 + i * 1.4, 0);
+  ghost.position.set(-2.2 + i * 0.08, 0.4 + i * 1.4, -0.6);
   // `>>> 0`: JavaScript's `~` gives a signed 32-bit number (−3); a mask is unsigned
   ghost.setCollisionFilter({ group: GHOST, mask: ~GHOST >>> 0 });
   scene.add(ghost);
@@ -203,8 +223,8 @@ function readout(): void {
 
 startDemo(scene, {
   canvas: document.getElementById('view') as HTMLCanvasElement,
-  eye: [1.0, 5.6, 12.2],
-  target: [0.9, 2.5, 0],
+  eye: [0.4, 6.2, 13.4],
+  target: [0.4, 2.3, 0],
   stats: document.getElementById('stats'),
   afterUpdate: (frame) => {
     fade();

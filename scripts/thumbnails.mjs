@@ -1,6 +1,7 @@
 // Takes the pictures of the examples site: a card picture per page (examples/public/thumbs/) and
 // the README's picture (docs/images/). Needs the built site (examples/dist) and Debian's Chromium.
-//   node scripts/thumbnails.mjs
+//   node scripts/thumbnails.mjs            every page
+//   node scripts/thumbnails.mjs shapes     only the pages named
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { dirname, join } from 'node:path';
@@ -24,13 +25,15 @@ const browser = await chromium.launch({
 });
 // the donuts page plays its moves first: take it once the two are linked
 const waits = { donuts: 10000 };
-const shots = pages.map((p) => ({
+const only = process.argv.slice(2);
+const chosen = only.length > 0 ? pages.filter((p) => only.includes(p.dir)) : pages;
+const shots = chosen.map((p) => ({
   url: `${base}/${p.dir}/`,
   out: join(root, 'examples/public/thumbs', `${p.dir}.png`),
   size: [480, 300],
   wait: waits[p.dir] ?? 4000,
 }));
-if (pages.some((p) => p.dir === 'sandbox'))
+if (chosen.some((p) => p.dir === 'sandbox'))
   shots.push({ url: `${base}/sandbox/?d=4`, out: join(root, 'docs/images/sandbox-4d.png'), size: [1200, 675] });
 for (const shot of shots) {
   mkdirSync(dirname(shot.out), { recursive: true });

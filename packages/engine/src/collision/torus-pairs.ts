@@ -310,7 +310,61 @@ function farApart(n: number, kind: number, b: Other, T: Float64Array, scratch: N
   const tor = b as CollisionTorus;
   for (let c = 0; c < n; c += 1) d2 += T[c] * T[c];
   const far = reach + tor.majorRadius + tor.minorRadius;
-  return d2 > far * far;
+  if (d2 > far * far) return true;
+  // Two slabs. B lies within r_B of its plane (through its centre, spanned by e_bi, e_bj), A's
+  // tube within r_A of its core circle: if the circle keeps farther than r_A + r_B + margin from
+  // that plane, nothing touches, and the same with the roles swapped. Each distance is bounded
+  // below along one unit direction w normal to the plane (the distance from a plane is at least
+  // the component along any such w): w along the part of the other centre off the plane, where
+  // the circle's reach along w is R·|(its plane's axes)·w|.
+  const U = scratch.v1;
+  const V = scratch.v2;
+  const bi = tor.planeI;
+  const bj = tor.planeJ;
+  const Rb = tor.majorRadius;
+  let u2 = 0;
+  for (let c = 0; c < n; c += 1) u2 += U[c] * U[c];
+  // r_A + margin + r_B (reach is r_A + R_A + margin; U, V carry the factor R_A)
+  const rr = reach - Math.sqrt(u2) + tor.minorRadius;
+  // A's circle against B's plane: w = T off the plane (e_bi, e_bj)
+  let off2 = 0;
+  let uw = 0;
+  let vw = 0;
+  for (let c = 0; c < n; c += 1) {
+    if (c === bi || c === bj) continue;
+    off2 += T[c] * T[c];
+  }
+  if (off2 > rr * rr) {
+    const off = Math.sqrt(off2);
+    for (let c = 0; c < n; c += 1) {
+      if (c === bi || c === bj) continue;
+      uw += U[c] * T[c];
+      vw += V[c] * T[c];
+    }
+    // the circle's extent along w: |(U·w, V·w)| (U, V carry the factor R_A)
+    if (off - Math.sqrt(uw * uw + vw * vw) / off > rr) return true;
+  }
+  // B's circle against A's plane (T + span(U, V)): w = −T off that plane
+  let tu = 0;
+  let tv = 0;
+  for (let c = 0; c < n; c += 1) {
+    tu += T[c] * U[c];
+    tv += T[c] * V[c];
+  }
+  // U ⊥ V, |U| = |V| = R_A: T's part off A's plane is T − (T·U)U/R² − (T·V)V/R²
+  const k = u2 > 0 ? 1 / u2 : 0;
+  let w2 = 0;
+  let wi = 0;
+  let wj = 0;
+  for (let c = 0; c < n; c += 1) {
+    const w = T[c] - k * (tu * U[c] + tv * V[c]);
+    w2 += w * w;
+    if (c === bi) wi = w;
+    if (c === bj) wj = w;
+  }
+  if (!(w2 > rr * rr)) return false;
+  const wl = Math.sqrt(w2);
+  return wl - (Rb * Math.sqrt(wi * wi + wj * wj)) / wl > rr;
 }
 
 /**

@@ -21,10 +21,9 @@ import { createManifold, createPose, maxManifoldPoints } from '../collision/mani
 import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
-import type { BoxShape } from '../shapes/box.js';
 import type { Shape } from '../shapes/shape.js';
 import type { ContactEvents } from './contact-events.js';
-import { ManifoldCache } from './manifold-cache.js';
+import { loadReuseRadius, ManifoldCache } from './manifold-cache.js';
 
 export { growFloat64, growInt32 } from './grow.js';
 import { growFloat64, growInt32 } from './grow.js';
@@ -286,7 +285,8 @@ export class ContactSet {
         i += 1;
         if (r < removedCount && removed[2 * r] * PAIR_KEY_SCALE + removed[2 * r + 1] === liveKey) {
           r += 1;
-          if (this.flags[slot] & CONTACT_TOUCHING) events.pushEnd(this.bodyA[slot]!, this.bodyB[slot]!, this.partA[slot]!, this.partB[slot]!);
+          if (this.flags[slot] & CONTACT_TOUCHING)
+            events.pushEnd(this.bodyA[slot]!, this.bodyB[slot]!, this.partA[slot]!, this.partB[slot]!);
           this.freeSlot(slot);
           continue;
         }
@@ -560,15 +560,14 @@ export class ContactSet {
           continue;
         }
       }
-      // Box–box: reuse the manifold while the boxes have hardly moved relative to each other
-      // (manifold-cache.ts); its points, ids and impulses stay where they are.
+      // Polytope pairs (box–box, convex mesh–box, convex mesh–mesh): reuse the manifold while the
+      // two have hardly moved relative to each other (manifold-cache.ts); its points, ids and
+      // impulses stay where they are.
       const sensor = A.sensorFlag || B.sensorFlag;
-      const reusable = !sensor && reuseTolerance > 0 && sA.kind === 'box' && sB.kind === 'box';
+      const reusable =
+        !sensor && reuseTolerance > 0 && (sA.kind === 'box' || sA.kind === 'mesh') && (sB.kind === 'box' || sB.kind === 'mesh');
       if (reusable) {
-        const h = (sB as BoxShape).halfExtents;
-        let r2 = 0;
-        for (let c = 0; c < n; c += 1) r2 += h[c] * h[c];
-        reuseNumbers[1] = Math.sqrt(r2);
+        loadReuseRadius(n, sB as never, reuseNumbers);
         if (this.cache.check(slot, pA, pB, reuseNumbers)) {
           this.cache.reuse(slot, m, pA, pB);
           let touching = false;

@@ -1,5 +1,6 @@
 /**
- * Reuse of box–box manifolds while the two boxes have hardly moved relative to each other.
+ * Reuse of the manifolds of polytope pairs (box–box, convex mesh–box, convex mesh–mesh) while the
+ * two shapes have hardly moved relative to each other.
  *
  * Why: in a resting stack or pyramid, the separating-axis test and the face clipper find the same
  * faces and corners sub-step after sub-step, and they are the costliest part of the narrowphase
@@ -10,6 +11,8 @@
  * reused manifold takes them to world space again and measures the separation along the normal
  * afresh. The feature ids (and with them the warm-start impulses) stay. Jolt's body pair cache
  * does the same; the test here bounds the motion of B's surface rather than of its centre.
+ * Convex mesh pairs pay more for a fresh manifold than box pairs (GJK, EPA and face clipping:
+ * mesh-polytope.ts), so a settled pile of meshes gains most.
  *
  * The tolerance (`Params.manifoldReuseTolerance`, m) bounds how far any point of B can have moved
  * relative to A since the manifold was computed: |Δx| + ‖ΔR‖_F·ρ_B, with Δx and ΔR the change of
@@ -23,6 +26,31 @@
 import type { Manifold, Pose } from '../collision/manifold.js';
 import { pointToLocal } from '../collision/manifold.js';
 import { growFloat64 } from './grow.js';
+
+/**
+ * Writes into numbers[1] the radius ρ of a polytope shape about its origin (a box: |half
+ * extents|; a convex mesh: its farthest vertex), the ρ_B that {@link ManifoldCache.check} reads.
+ * (Through the array: a double returned from a call V8 does not inline would be boxed.)
+ */
+export function loadReuseRadius(
+  n: number,
+  shape: { readonly kind: string; readonly halfExtents?: ArrayLike<number>; readonly vertices?: ArrayLike<number> },
+  numbers: Float64Array,
+): void {
+  let r2 = 0;
+  if (shape.kind === 'box') {
+    const h = shape.halfExtents!;
+    for (let c = 0; c < n; c += 1) r2 += h[c]! * h[c]!;
+  } else {
+    const V = shape.vertices!;
+    for (let k = 0; k < V.length; k += n) {
+      let s = 0;
+      for (let c = 0; c < n; c += 1) s += V[k + c]! * V[k + c]!;
+      if (s > r2) r2 = s;
+    }
+  }
+  numbers[1] = Math.sqrt(r2);
+}
 
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
 export class ManifoldCache {

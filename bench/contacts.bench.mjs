@@ -27,11 +27,22 @@
 // the last table); 1 if a peer or the built engine cannot be loaded, or a scene throws.
 //
 // Run: node bench/contacts.bench.mjs    (after the build: it imports the BUILT packages)
+// Only some scenes: CONTACTS_SCENES='stack9 4D' (comma-separated scene names) runs the 3D scenes
+// named and the n-D groups holding a scene named (a group runs whole: its ratio needs its peers);
+// CONTACTS_ROUNDS overrides the rounds of every scene run.
 import { performance } from 'node:perf_hooks';
 import { medianTable } from './lib/table.mjs';
 import { TURN_STEPS, runRoundsInTurns } from './lib/turns.mjs';
 import { STEPS, judge, pileLayout, peerLayouts, stackLayout } from './scenes/layouts.mjs';
 import { buildCannonScene, buildRapierScene, loadCannon, loadRapier } from './scenes/peer-scenes.mjs';
+
+/** CONTACTS_SCENES: the scene names to run (undefined: all). */
+const ONLY = process.env.CONTACTS_SCENES?.split(',')
+  .map((name) => name.trim())
+  .filter(Boolean);
+const wanted = (name) => ONLY === undefined || ONLY.includes(name);
+/** CONTACTS_ROUNDS: rounds of every scene (undefined: each scene's own). */
+const ROUNDS_OVERRIDE = process.env.CONTACTS_ROUNDS === undefined ? undefined : Number(process.env.CONTACTS_ROUNDS);
 
 /** Wall-clock budget of one PhysiN run (ms); beyond it the run stops early (reported as capped). */
 const PHYSIN_BUDGET_MS = { small: 12_000, pile: 25_000 };
@@ -137,11 +148,12 @@ const ROUNDS = { stack: 3, pyramid: 3, pile: 1 };
 const [PHYSIN, ...PEERS] = engines;
 const results = {}; // results[scene][engine]; results[scene]['PhysiN vs ' + peer]
 const rows = [];
-for (const layout of peerLayouts()) {
+const layouts3D = peerLayouts().filter((layout) => wanted(layout.name));
+for (const layout of layouts3D) {
   results[layout.name] = {};
   const laneOf = (engine) => lane(layout, engine.build, engine.budget(layout));
   PEERS.forEach((peer, p) => {
-    const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], ROUNDS[layout.kind] ?? 1);
+    const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], ROUNDS_OVERRIDE ?? ROUNDS[layout.kind] ?? 1);
     results[layout.name][`PhysiN vs ${peer.name}`] = mine;
     if (p === 0) results[layout.name].PhysiN = mine;
     results[layout.name][peer.name] = theirs;
@@ -158,29 +170,31 @@ for (const layout of peerLayouts()) {
     }
   });
 }
-medianTable(
-  `3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs)`,
-  rows,
-);
+if (rows.length > 0)
+  medianTable(
+    `3D contact scenes: ms/step, median over the ${STEPS} steps of a run (each step timed alone; engines in turns of ${TURN_STEPS} steps; the median of \`rounds\` runs)`,
+    rows,
+  );
 
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
-medianTable(
-  '3D contact scenes: ratios of the median ms/step, each against the PhysiN run that shared its turns (below 1: PhysiN faster)',
-  peerLayouts().map((layout) => {
-    const r = results[layout.name];
-    const capped = [r['PhysiN vs Rapier'], r['PhysiN vs cannon-es']].filter((x) => x.capped);
-    return {
-      scene: layout.name,
-      'PhysiN (turns with Rapier)': r['PhysiN vs Rapier'].median,
-      Rapier: r.Rapier.median,
-      'PhysiN/Rapier': ratio(r['PhysiN vs Rapier'].median, r.Rapier.median),
-      'PhysiN (turns with cannon-es)': r['PhysiN vs cannon-es'].median,
-      'cannon-es': r['cannon-es'].median,
-      'PhysiN/cannon-es': ratio(r['PhysiN vs cannon-es'].median, r['cannon-es'].median),
-      note: capped.length > 0 ? `PhysiN capped at ${capped[0].steps} steps` : '',
-    };
-  }),
-);
+if (layouts3D.length > 0)
+  medianTable(
+    '3D contact scenes: ratios of the median ms/step, each against the PhysiN run that shared its turns (below 1: PhysiN faster)',
+    layouts3D.map((layout) => {
+      const r = results[layout.name];
+      const capped = [r['PhysiN vs Rapier'], r['PhysiN vs cannon-es']].filter((x) => x.capped);
+      return {
+        scene: layout.name,
+        'PhysiN (turns with Rapier)': r['PhysiN vs Rapier'].median,
+        Rapier: r.Rapier.median,
+        'PhysiN/Rapier': ratio(r['PhysiN vs Rapier'].median, r.Rapier.median),
+        'PhysiN (turns with cannon-es)': r['PhysiN vs cannon-es'].median,
+        'cannon-es': r['cannon-es'].median,
+        'PhysiN/cannon-es': ratio(r['PhysiN vs cannon-es'].median, r['cannon-es'].median),
+        note: capped.length > 0 ? `PhysiN capped at ${capped[0].steps} steps` : '',
+      };
+    }),
+  );
 
 // ---- PhysiN alone in n dimensions ------------------------------------------------------------
 // Each group runs in turns (bench/lib/turns.mjs), so a ratio inside a group compares the same minutes:
@@ -194,8 +208,8 @@ const nGroups = [
 ];
 const nRows = [];
 const nResults = {};
-for (const group of nGroups) {
-  const groupResults = runRounds(group.layouts.map(physinLane), group.rounds);
+for (const group of nGroups.filter((g) => g.layouts.some((layout) => wanted(layout.name)))) {
+  const groupResults = runRounds(group.layouts.map(physinLane), ROUNDS_OVERRIDE ?? group.rounds);
   group.layouts.forEach((layout, i) => {
     const r = groupResults[i];
     nResults[layout.name] = r;
@@ -203,18 +217,19 @@ for (const group of nGroups) {
   });
 }
 // Cost growth of the 5-box stack with n, relative to n = 3.
-const base5 = nResults['stack5 3D'].median;
+const base5 = nResults['stack5 3D']?.median;
 for (const row of nRows) {
   row['vs 3D'] = row.scene.startsWith('stack5')
     ? ratio(row['ms/step (median)'], base5)
     : row.scene === 'stack9 4D'
-      ? ratio(row['ms/step (median)'], nResults['stack9 3D'].median)
+      ? ratio(row['ms/step (median)'], nResults['stack9 3D']?.median)
       : '—';
 }
-medianTable(
-  `PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of a run ("vs 3D": the same scene in 3D, run in the same turns)`,
-  nRows,
-);
+if (nRows.length > 0)
+  medianTable(
+    `PhysiN in n dimensions: ms/step, median over the ${STEPS} steps of a run ("vs 3D": the same scene in 3D, run in the same turns)`,
+    nRows,
+  );
 
 // ---- Targets ----------------------------------------------------------------------------------
 const P = (scene) => results[scene].PhysiN;
@@ -234,16 +249,23 @@ const standing = (scene) => {
     met: yesNo(r.stands === true && !r.capped),
   });
 };
-within('stack9: PhysiN / Rapier ms/step', results.stack9['PhysiN vs Rapier'].median, results.stack9.Rapier.median, 2);
-standing('stack9');
-within('pyramid20: PhysiN / Rapier ms/step', results.pyramid20['PhysiN vs Rapier'].median, results.pyramid20.Rapier.median, 2);
-standing('pyramid20');
-within('pile1000: PhysiN / Rapier ms/step', results.pile1000['PhysiN vs Rapier'].median, results.pile1000.Rapier.median, 3);
-for (const scene of ['stack9', 'pyramid20', 'pile1000']) {
+const limits3D = { stack9: 2, pyramid20: 2, pile1000: 3 };
+for (const layout of layouts3D) {
+  const scene = layout.name;
+  within(
+    `${scene}: PhysiN / Rapier ms/step`,
+    results[scene]['PhysiN vs Rapier'].median,
+    results[scene].Rapier.median,
+    limits3D[scene],
+  );
+  if (layout.kind !== 'pile') standing(scene);
+}
+for (const { name: scene } of layouts3D) {
   const x = ratio(results[scene]['PhysiN vs cannon-es'].median, results[scene]['cannon-es'].median);
   targets.push({ target: `${scene}: faster than cannon-es`, measured: fmtRatio(x), limit: '< 1×', met: yesNo(x < 1) });
 }
-within('stack9 4D / stack9 3D (PhysiN ms/step, same turns)', nResults['stack9 4D'].median, nResults['stack9 3D'].median, 2);
+if (nResults['stack9 4D'] !== undefined)
+  within('stack9 4D / stack9 3D (PhysiN ms/step, same turns)', nResults['stack9 4D'].median, nResults['stack9 3D'].median, 2);
 medianTable('Targets (medians of ms/step; reported, not asserted)', targets);
 
 const physinRuns = [...Object.values(results).map((r) => r.PhysiN), ...Object.values(nResults)];

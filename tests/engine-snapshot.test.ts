@@ -724,6 +724,13 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'newMatched',
     'cache',
     'reuseNumbers',
+    // derived: gathered each sub-step; the contact lists are rebuilt after takeSlots
+    'active',
+    'activeCount',
+    'gathered',
+    'links',
+    'orderHoles',
+    'solverSet',
   ],
   ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
   TreeBroadphase: [

@@ -687,6 +687,9 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'stepParams',
     'solverPasses',
     'holes',
+    // derived: the awake set is rebuilt from the bodies' flags after a restore
+    'awake',
+    'wakeOther',
   ],
   ContactSet: [
     'n',

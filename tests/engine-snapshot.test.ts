@@ -757,6 +757,8 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'highWater',
     'moved',
     'movedCount',
+    // derived: set by a wake, a sleep or a restore
+    'reportStale',
     'halfSpaces',
     'halfSpaceCount',
     'freeIds',

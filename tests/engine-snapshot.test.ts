@@ -687,6 +687,9 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'stepParams',
     'solverPasses',
     'holes',
+    // derived: the awake set is rebuilt from the bodies' flags after a restore
+    'awake',
+    'wakeOther',
   ],
   ContactSet: [
     'n',
@@ -724,6 +727,13 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'newMatched',
     'cache',
     'reuseNumbers',
+    // derived: gathered each sub-step; the contact lists are rebuilt after takeSlots
+    'active',
+    'activeCount',
+    'gathered',
+    'links',
+    'orderHoles',
+    'solverSet',
   ],
   ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
   TreeBroadphase: [
@@ -747,6 +757,8 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'highWater',
     'moved',
     'movedCount',
+    // derived: set by a wake, a sleep or a restore
+    'reportStale',
     'halfSpaces',
     'halfSpaceCount',
     'freeIds',

@@ -25,7 +25,7 @@ import type { CompoundShape } from './shapes/compound.js';
 import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
 import { ContactSolver } from './solver/contact-solver.js';
-import { Islands } from './solver/islands.js';
+import { AwakeSet, Islands } from './solver/islands.js';
 import { SolverBodies } from './solver/solver-bodies.js';
 import { NonFiniteStateError } from './errors.js';
 import { integratePositions } from './integrator/positions.js';
@@ -35,8 +35,8 @@ import {
   createStepSnapshot,
   firstNonFiniteField,
   reserveStepSnapshot,
-  restoreStepState,
-  saveStepState,
+  restoreBodyStates,
+  saveBodyState,
 } from './integrator/step-state.js';
 import type { StepSnapshot } from './integrator/step-state.js';
 import {
@@ -61,6 +61,17 @@ export interface WorldStats {
   readonly bodies: number;
   /** Dynamic bodies that are awake (integrated and solved). */
   readonly awakeBodies: number;
+  /**
+   * Bodies the last sub-step visited (integrated and moved in the broadphase): the awake set,
+   * awake dynamic and kinematic bodies. Sleeping and static bodies cost the step nothing.
+   */
+  readonly bodiesVisited: number;
+  /**
+   * Contact pairs the last sub-step's narrowphase visited: those with a moving body (awake
+   * dynamic or moving kinematic). Pairs of sleeping or static bodies are not visited; the events,
+   * the solver and the islands walk the same list.
+   */
+  readonly pairsVisited: number;
   /** Joints in the world. */
   readonly joints: number;
   /** Pairs of bodies whose grown boxes overlap (the broadphase's pair set, sleeping pairs included). */
@@ -237,6 +248,8 @@ export class WorldBase {
   private readonly solverBodies: SolverBodies;
   private readonly solver: ContactSolver;
   private readonly islands = new Islands();
+  /** The bodies the step visits (neither static nor asleep), and the step's bookkeeping of them. */
+  private readonly awake = new AwakeSet();
   /** Passes of the velocity solve in the last sub-step (a count for `stats`, not state). */
   private solverPasses = 0;
   // ---- joints (see docs/joints.md) ----
@@ -269,6 +282,14 @@ export class WorldBase {
       body.w.fill(0);
     }
     this.setProxiesAwake(body, !asleep);
+    this.syncAwake(body);
+  };
+  /** The island walk of a wake: wakes `other` if it is a sleeping dynamic body (its timer kept). */
+  private readonly wakeOther = (other: Body): void => {
+    if (other.motion !== MOTION_DYNAMIC || !other.sleeping) return;
+    other.sleeping = false;
+    this.setProxiesAwake(other, true);
+    this.syncAwake(other);
   };
   private readonly owner: BodyOwner = {
     onBodyChanged: (body: Body): void => {
@@ -278,6 +299,8 @@ export class WorldBase {
         this.broadphase.setStatic(body.proxyId, body.motion === MOTION_STATIC);
       } else for (let i = 0; i < ids.length; i += 1) this.broadphase.setStatic(ids[i]!, body.motion === MOTION_STATIC);
       this.setProxiesAwake(body, !body.sleeping);
+      if (body.poseDirty) this.awake.queueMoved(body);
+      this.syncAwake(body);
     },
     onMaterialChanged: (body: Body): void => {
       this.contacts.refreshMaterial(body);
@@ -355,6 +378,7 @@ export class WorldBase {
 
   /** Count of touching contact pairs (a manifold point closer than `contactMargin`). */
   get touchingCount(): number {
+    this.contacts.compactOrder();
     let c = 0;
     for (let i = 0; i < this.contacts.count; i += 1) {
       if (this.contacts.flags[this.contacts.order[i]!]! & CONTACT_TOUCHING) c += 1;
@@ -434,11 +458,15 @@ export class WorldBase {
    */
   get stats(): WorldStats {
     this.compact();
+    const set = this.awake;
+    set.sort();
     let awake = 0;
-    for (const body of this.bodyList) if (body.motion === MOTION_DYNAMIC && !body.sleeping) awake += 1;
+    for (let i = 0; i < set.count; i += 1) if (set.list[i]!.motion === MOTION_DYNAMIC) awake += 1;
     return Object.freeze({
       bodies: this.bodyList.length,
       awakeBodies: awake,
+      bodiesVisited: set.visitedBodies,
+      pairsVisited: set.visitedPairs,
       joints: this.jointList.length,
       pairs: this.broadphase.pairCount,
       contacts: this.contacts.count,
@@ -557,6 +585,8 @@ export class WorldBase {
     this.bodyList.push(body);
     this.bodyView = null;
     this.reach[body.worldIndex] = 0;
+    this.awake.reserve(this.bodyList.length);
+    this.awake.sync(body);
     const bp = this.broadphase;
     if (compound !== null) {
       const ids = new Int32Array(compound.partCount);
@@ -600,6 +630,9 @@ export class WorldBase {
     // reads the list between here and there).
     this.bodyList[index] = null as unknown as Body;
     this.holes += 1;
+    // Out of the awake set before anything wakes (compact() rebuilds the set after the holes).
+    body.sleeping = true;
+    this.awake.sync(body);
     this.contacts.removeBody(body, this.events);
     const ids = this.partProxies[body.proxyId];
     if (ids !== undefined && ids !== null) {
@@ -750,7 +783,7 @@ export class WorldBase {
     this.compact();
     const D = this.D;
     const p = this.stepParams;
-    const bodies = this.bodyList;
+    const awake = this.awake;
     const subSteps = p.subSteps;
     const h = dt / subSteps;
     const c = this.constants;
@@ -759,31 +792,48 @@ export class WorldBase {
     c[STEP_ROTOR_ITERATIONS] = p.gyroscopic ? p.gyroscopicIterations : 0;
     c[STEP_LINEAR_SCALE] = p.linearDamping > 0 ? 1 / (1 + h * p.linearDamping) : 1;
     c[STEP_ANGULAR_SCALE] = p.angularDamping > 0 ? 1 / (1 + h * p.angularDamping) : 1;
-    saveStepState(this.stepState, bodies);
+    // Only the awake bodies are saved (a sleeping body does not change in a step; one that wakes
+    // during it is saved as it wakes, see syncAwake).
+    awake.sort();
+    awake.beginStep();
+    awake.inStep = true;
+    for (let b = 0; b < awake.count; b += 1) {
+      const body = awake.list[b]!;
+      awake.markSaved(body);
+      saveBodyState(this.stepState, body);
+    }
     this.events.clear();
     for (let s = 0; s < subSteps; s += 1) {
-      integrateVelocities(D, bodies, this.gravityValue, c, this.scratch.bivector);
+      awake.sort();
+      integrateVelocities(D, awake.list, awake.count, this.gravityValue, c, this.scratch.bivector);
       const unbounded = this.updateBroadphase();
-      if (unbounded >= 0) this.failStep(bodies[unbounded]!, s, subSteps);
+      if (unbounded !== null) this.failStep(unbounded, s, subSteps);
       const bp = this.broadphase as BroadphaseBase;
+      this.contacts.gatherActive(awake.list, awake.count);
+      awake.visitedPairs = this.contacts.activeCount;
       this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax, this.filterFn);
       this.solveContacts(p);
       const js = this.jointSolver;
       if (js !== null && js.brokenCount > 0) this.breakJoints(js);
-      const bad = integratePositions(D, bodies, c, this.scratch.rotor);
-      if (bad >= 0) this.failStep(bodies[bad]!, s, subSteps);
+      // (with the bodies the solver woke)
+      awake.sort();
+      awake.visitedBodies = awake.count;
+      const bad = integratePositions(D, awake.list, awake.count, c, this.scratch.rotor);
+      if (bad >= 0) this.failStep(awake.list[bad]!, s, subSteps);
       if (js !== null && js.count > 0) js.solvePositions(this.solverBodies, JOINT_POSITION_ITERATIONS);
-      for (let b = 0; b < bodies.length; b += 1) {
-        const body = bodies[b]!;
+      for (let b = 0; b < awake.count; b += 1) {
+        const body = awake.list[b]!;
         if (body.motion !== MOTION_STATIC && !body.sleeping) this.updatePose(body);
       }
       this.recordEvents();
       if (p.allowSleep) {
-        this.islands.update(bodies, this.contacts, c, p, this.setSleeping, this.jointList);
+        this.islands.update(awake, this.contacts, c, p, this.setSleeping, this.jointList);
       }
     }
     this.boundsStale = true;
-    for (let b = 0; b < bodies.length; b += 1) bodies[b]!.clearForces();
+    awake.inStep = false;
+    // Forces wake a body: every body with a force was awake during the step, hence saved.
+    for (let b = 0; b < awake.savedCount; b += 1) awake.saved[b]!.clearForces();
     this.clock[0] = this.clock[0]! + dt;
     this.clock[1] = this.clock[1]! + 1;
     if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
@@ -796,6 +846,8 @@ export class WorldBase {
   /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
   snapshotParts(): WorldParts {
     this.compact();
+    // A restore sets the bodies' sleep flags and poses itself: the awake set is rebuilt after it.
+    this.awake.stale = true;
     return {
       clock: this.clock,
       reach: this.reach,
@@ -837,7 +889,14 @@ export class WorldBase {
    * their reach along. O(bodies) once after any number of removals.
    */
   private compact(): void {
-    if (this.holes === 0) return;
+    this.contacts.compactOrder();
+    if (this.holes === 0) {
+      if (this.awake.stale) {
+        this.awake.stale = false;
+        this.awake.rebuild(this.bodyList);
+      }
+      return;
+    }
     const list = this.bodyList;
     const reach = this.reach;
     let o = 0;
@@ -851,6 +910,41 @@ export class WorldBase {
     }
     list.length = o;
     this.holes = 0;
+    this.awake.stale = false;
+    this.awake.rebuild(list);
+  }
+
+  /**
+   * Puts `body` in the awake set or takes it out, after its sleep state or motion changed. A body
+   * that joins during a step has its state saved first (the step may be undone); a dynamic body
+   * that wakes wakes its island, by a walk over touching contacts and joints: O(island).
+   */
+  private syncAwake(body: Body): void {
+    const awake = this.awake;
+    if (awake.stale || body.worldIndex < 0) return; // (rebuilt before the next use)
+    if (!awake.sync(body)) return;
+    if (!awake.has(body)) {
+      this.reach[body.worldIndex] = 0;
+      return;
+    }
+    if (awake.inStep && awake.markSaved(body)) saveBodyState(this.stepState, body);
+    if (body.motion !== MOTION_DYNAMIC) return;
+    const pending = awake.pending;
+    pending.push(body);
+    if (awake.waking) return; // the walk under way takes it
+    awake.waking = true;
+    while (pending.length > 0) {
+      const b = pending.pop()!;
+      this.contacts.forEachTouching(b, this.wakeOther);
+      if (b.jointCount === 0) continue;
+      const joints = this.jointList;
+      for (let j = 0; j < joints.length; j += 1) {
+        const joint = joints[j]!;
+        if (joint.a === b && joint.b !== null) this.wakeOther(joint.b);
+        else if (joint.b === b) this.wakeOther(joint.a);
+      }
+    }
+    awake.waking = false;
   }
 
   /** pose.x = body.x, pose.M = the matrix of body.R. */
@@ -1019,34 +1113,47 @@ export class WorldBase {
    * changes go to the contact set. Returns the index of a body whose velocity is not finite (the
    * step is then undone before anything reads it), or -1.
    */
-  private updateBroadphase(): number {
-    const bodies = this.bodyList;
-    const reach = this.reach;
-    const h = this.constants[STEP_H]!;
-    const speeds = this.scratch.speeds;
-    for (let b = 0; b < bodies.length; b += 1) {
-      const body = bodies[b]!;
+  private updateBroadphase(): Body | null {
+    const awake = this.awake;
+    // Bodies moved by hand (static ones too); an awake one is moved below with the others.
+    for (let i = 0; i < awake.movedCount; i += 1) {
+      const body = awake.moved[i]!;
+      if (!body.poseDirty || body.worldIndex < 0) continue;
+      this.updatePose(body);
+      body.poseDirty = false;
+      if (!awake.has(body) && !this.reachAndMove(body)) return body;
+    }
+    awake.clearMoved();
+    for (let b = 0; b < awake.count; b += 1) {
+      const body = awake.list[b]!;
       if (body.poseDirty) {
         this.updatePose(body);
         body.poseDirty = false;
-      } else if (body.motion === MOTION_STATIC || body.sleeping) {
-        reach[b] = 0;
-        continue;
       }
-      robustNormInto(speeds, 0, body.v);
-      robustNormInto(speeds, 1, body.w);
-      const speed = speeds[0]!;
-      const spin = speeds[1]!;
-      if (!(speed < Infinity) || !(spin < Infinity)) return b;
-      const r = h * (speed + spin * body.boundingRadius);
-      if (!(r < Infinity)) continue; // finite but beyond reach of any box: nothing can meet it
-      reach[b] = r;
-      this.moveProxy(body);
+      if (!this.reachAndMove(body)) return body;
     }
     const bp = this.broadphase;
     bp.updatePairs();
     this.contacts.applyPairChanges(bp.removedPairs, bp.removedCount, bp.addedPairs, bp.addedCount, this.bodyOfProxy, this.events);
-    return -1;
+    return null;
+  }
+
+  /**
+   * The body's reach h·(|v| + |ω|·radius) and its proxy moved to its pose, grown by it. False when
+   * a velocity is not finite (the step is then undone).
+   */
+  private reachAndMove(body: Body): boolean {
+    const speeds = this.scratch.speeds;
+    robustNormInto(speeds, 0, body.v);
+    robustNormInto(speeds, 1, body.w);
+    const speed = speeds[0]!;
+    const spin = speeds[1]!;
+    if (!(speed < Infinity) || !(spin < Infinity)) return false;
+    const r = this.constants[STEP_H]! * (speed + spin * body.boundingRadius);
+    if (!(r < Infinity)) return true; // finite but beyond reach of any box: nothing can meet it
+    this.reach[body.worldIndex] = r;
+    this.moveProxy(body);
+    return true;
   }
 
   /**
@@ -1060,7 +1167,9 @@ export class WorldBase {
     const solver = this.solver;
     const joints = this.jointSolver;
     sb.reset();
-    const points = solver.prepare(this.contacts, sb, this.constants, p);
+    // The solver sees the active slots alone (those with a moving body).
+    const view = this.contacts.solverContacts();
+    const points = solver.prepare(view, sb, this.constants, p);
     // With no joint left, nothing of the last prepare may be solved again (solvePositions reads
     // joints.count): a world whose last joint was removed hung in its next step.
     if (joints !== null && this.jointList.length === 0) joints.count = 0;
@@ -1087,7 +1196,7 @@ export class WorldBase {
     if (points > 0) {
       if (p.useShockPropagation) solver.shockPropagate(sb, p.shockIterations);
       solver.restitution(sb);
-      solver.store(this.contacts);
+      solver.store(view);
     }
     sb.writeBack();
   }
@@ -1116,8 +1225,9 @@ export class WorldBase {
   /** Stage 6a: begin / end events from the touching flags of this sub-step. */
   private recordEvents(): void {
     const contacts = this.contacts;
-    for (let i = 0; i < contacts.count; i += 1) {
-      const slot = contacts.order[i]!;
+    // (a pair of sleeping or static bodies keeps its touching state: no event)
+    for (let i = 0; i < contacts.activeCount; i += 1) {
+      const slot = contacts.active[i]!;
       const f = contacts.flags[slot]!;
       const now = (f & CONTACT_TOUCHING) !== 0;
       const before = (f & CONTACT_WAS_TOUCHING) !== 0;
@@ -1177,20 +1287,28 @@ export class WorldBase {
   /** Brings every broadphase box up to the bodies' poses (before a query). */
   private refreshBounds(): void {
     this.compact();
-    if (!this.boundsStale) {
-      let dirty = false;
-      for (const body of this.bodyList) if (body.poseDirty) dirty = true;
-      if (!dirty) return;
-    }
-    for (const body of this.bodyList) {
-      if (body.poseDirty) {
-        this.updatePose(body);
-        body.poseDirty = false;
-      } else if (body.motion === MOTION_STATIC || body.sleeping) {
-        continue;
-      }
+    const awake = this.awake;
+    if (!this.boundsStale && awake.movedCount === 0) return;
+    awake.sort();
+    for (let i = 0; i < awake.movedCount; i += 1) {
+      const body = awake.moved[i]!;
+      if (!body.poseDirty || body.worldIndex < 0) continue;
+      this.updatePose(body);
+      body.poseDirty = false;
       this.reach[body.worldIndex] = 0;
       this.moveProxy(body);
+    }
+    awake.clearMoved();
+    if (this.boundsStale) {
+      for (let b = 0; b < awake.count; b += 1) {
+        const body = awake.list[b]!;
+        if (body.poseDirty) {
+          this.updatePose(body);
+          body.poseDirty = false;
+        }
+        this.reach[body.worldIndex] = 0;
+        this.moveProxy(body);
+      }
     }
     this.boundsStale = false;
   }
@@ -1222,7 +1340,9 @@ export class WorldBase {
   /** Undoes the current step and throws the error that names the body. */
   private failStep(body: Body, subStep: number, subSteps: number): never {
     const field = firstNonFiniteField(body) ?? 'x';
-    restoreStepState(this.stepState, this.bodyList);
+    const awake = this.awake;
+    awake.inStep = false;
+    restoreBodyStates(this.stepState, awake.saved, awake.savedCount);
     throw new NonFiniteStateError(body, field, subStep, subSteps);
   }
 }

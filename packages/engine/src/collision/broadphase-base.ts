@@ -81,6 +81,11 @@ export abstract class BroadphaseBase implements Broadphase {
   protected highWater = 0;
   protected moved: Int32Array;
   protected movedCount = 0;
+  /**
+   * The reported pairs may differ from the last update's though no proxy moved (a proxy woke or
+   * fell asleep, or a restore): the next update rewrites them. Derived, not state.
+   */
+  private reportStale = true;
   protected halfSpaces: Int32Array;
   protected halfSpaceCount = 0;
 
@@ -263,8 +268,11 @@ export abstract class BroadphaseBase implements Broadphase {
   setAwake(id: number, awake: boolean): void {
     this.checkLive(id, 'id');
     if (typeof awake !== 'boolean') throw new TypeError('awake must be a boolean');
+    const was = (this.flags[id]! & AWAKE) !== 0;
+    if (was === awake) return;
     if (awake) this.flags[id]! |= AWAKE;
     else this.flags[id]! &= ~AWAKE;
+    this.reportStale = true;
   }
 
   setStatic(id: number, isStatic: boolean): void {
@@ -323,6 +331,16 @@ export abstract class BroadphaseBase implements Broadphase {
     st.nodesVisited = 0;
     this.candCount = 0;
     this.droppedCount = 0;
+    if (this.incremental && this.movedCount === 0 && !this.reportStale) {
+      // Nothing moved, woke or fell asleep (a sleeping world): the pairs and the report stand.
+      // O(1), where the passes below cost O(pairs).
+      st.candidates = 0;
+      st.pairs = this.keyCount;
+      this.addedCount = 0;
+      this.removedCount = 0;
+      return this.pairCount;
+    }
+    this.reportStale = false;
 
     // Pairs with neither proxy moved keep their overlap status; the rest are recomputed.
     const flags = this.flags;
@@ -574,6 +592,7 @@ export abstract class BroadphaseBase implements Broadphase {
     this.pairCount = 0;
     this.addedCount = 0;
     this.removedCount = 0;
+    this.reportStale = true;
     for (let id = 0; id < s.highWater; id += 1) {
       if ((this.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) this.onInsert(id);
     }

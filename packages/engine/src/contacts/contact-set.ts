@@ -98,6 +98,75 @@ const SWEEP_STEPS = 24;
 const SWEEP_TOLERANCE = 1e-4;
 
 /**
+ * The contact list of every body, as doubly linked lists through the slots (Box2D's contact
+ * edges): edge e = 2·slot + side (side 0: the slot's body A, 1: body B). Derived from the slots
+ * (a restore rebuilds it), so waking an island, gathering the contacts of the awake bodies and
+ * removing a body cost O(their contacts), not O(all contacts).
+ */
+class SlotLinks {
+  /** Per edge: the next edge of the same body's list, plus one (0: the end). */
+  next = new Int32Array(32);
+  /** Per edge: the previous edge of the same body's list, plus one (0: the first). */
+  prev = new Int32Array(32);
+  /** Per proxy id of a body (`Body.proxyId`): its first edge plus one (0: no contact). */
+  head = new Int32Array(16);
+  /** Per slot: the pass of `gatherActive` that last took it. */
+  mark = new Int32Array(16);
+  /** The current pass of `gatherActive`. */
+  epoch = 0;
+  /** True when the lists do not match the slots (a snapshot filled them): rebuilt before use. */
+  stale = false;
+}
+
+/**
+ * The slots, fields and order the contact solver reads (`ContactSolver.prepare` / `store`): the
+ * set's own arrays, with `order` / `count` the active slots alone (see ContactSet.solverContacts).
+ */
+interface SolverContacts {
+  order: Int32Array;
+  count: number;
+  pointCapacity: number;
+  flags: Uint8Array;
+  manifolds: Manifold[];
+  bodyA: (Body | null)[];
+  bodyB: (Body | null)[];
+  normalImpulse: Float64Array;
+  approachSpeed: Float64Array;
+  patchTangent: Float64Array;
+  patchTwist: Float64Array;
+  friction: Float64Array;
+  restitution: Float64Array;
+}
+
+/**
+ * Sorts `list[0 .. count)` (slots) by ascending `keys[slot]` in place (heap sort: no recursion,
+ * no allocation). Keys are unique, so the result is the same whatever the input order.
+ */
+function sortSlotsByKey(list: Int32Array, count: number, keys: Float64Array): void {
+  for (let start = (count >> 1) - 1; start >= 0; start -= 1) siftSlot(list, keys, start, count);
+  for (let end = count - 1; end > 0; end -= 1) {
+    const t = list[0];
+    list[0] = list[end];
+    list[end] = t;
+    siftSlot(list, keys, 0, end);
+  }
+}
+
+/** The sift-down of sortSlotsByKey's heap over list[0 .. end). */
+function siftSlot(list: Int32Array, keys: Float64Array, root: number, end: number): void {
+  for (;;) {
+    let child = 2 * root + 1;
+    if (child >= end) return;
+    if (child + 1 < end && keys[list[child + 1]] > keys[list[child]]) child += 1;
+    if (keys[list[root]] >= keys[list[child]]) return;
+    const t = list[root];
+    list[root] = list[child];
+    list[child] = t;
+    root = child;
+  }
+}
+
+/**
  * The contact slots of one world (n dimensions). All arrays are indexed by slot; `order` lists
  * the live slots in ascending pair key.
  */
@@ -107,10 +176,31 @@ export class ContactSet {
   /** Most points a manifold keeps in n dimensions. */
   readonly pointCapacity: number;
 
-  /** Live slots in ascending key order: order[0 .. count). */
+  /**
+   * Live slots in ascending key order: order[0 .. count) once `compactOrder()` ran (`removeBody`
+   * leaves holes that it closes; every pass of the set closes them first).
+   */
   order: Int32Array = new Int32Array(16);
   /** Count of live contacts. */
   count = 0;
+  /**
+   * The slots with a moving body (an awake dynamic or a moving kinematic one) in ascending key
+   * order: active[0 .. activeCount). The narrowphase, the solver, the events and the islands of a
+   * sub-step walk this list alone, so that sleeping piles cost nothing. The world gathers it from
+   * its awake bodies (`gatherActive`); without that, `updateManifolds` finds it by a pass over
+   * every slot.
+   */
+  active: Int32Array = new Int32Array(16);
+  /** Count of active slots. */
+  activeCount = 0;
+  /** Whether `gatherActive` ran since the last `updateManifolds`. */
+  private gathered = false;
+  /** The contact list of every body (derived from the slots). */
+  private readonly links = new SlotLinks();
+  /** Slots `removeBody` freed that `order` still lists (see compactOrder). */
+  private orderHoles = 0;
+  /** The view of the active slots handed to the contact solver (see solverContacts). */
+  private readonly solverSet: SolverContacts;
 
   /** Pair key of each slot. */
   keys: Float64Array = new Float64Array(16);
@@ -192,6 +282,21 @@ export class ContactSet {
     this.oldTaken = new Uint8Array(this.pointCapacity);
     this.newMatched = new Uint8Array(this.pointCapacity);
     this.cache = new ManifoldCache(n, this.pointCapacity);
+    this.solverSet = {
+      order: this.active,
+      count: 0,
+      pointCapacity: this.pointCapacity,
+      flags: this.flags,
+      manifolds: this.manifolds,
+      bodyA: this.bodyA,
+      bodyB: this.bodyB,
+      normalImpulse: this.normalImpulse,
+      approachSpeed: this.approachSpeed,
+      patchTangent: this.patchTangent,
+      patchTwist: this.patchTwist,
+      friction: this.friction,
+      restitution: this.restitution,
+    };
     if (sweepScratch[n] === undefined) {
       sweepScratch[n] = { manifold: createManifold(n, this.pointCapacity), pose: createPose(n), numbers: new Float64Array(4) };
     }
@@ -218,6 +323,11 @@ export class ContactSet {
     this.orderNext = growInt32(this.orderNext, cap);
     this.partA = growInt32(this.partA, cap);
     this.partB = growInt32(this.partB, cap);
+    this.active = growInt32(this.active, cap);
+    const links = this.links;
+    links.next = growInt32(links.next, 2 * cap);
+    links.prev = growInt32(links.prev, 2 * cap);
+    links.mark = growInt32(links.mark, cap);
     for (let s = cap - 1; s >= this.capacity; s -= 1) {
       this.bodyA[s] = null;
       this.bodyB[s] = null;
@@ -239,6 +349,7 @@ export class ContactSet {
   }
 
   private freeSlot(slot: number): void {
+    if (!this.links.stale) this.unlink(slot);
     this.bodyA[slot] = null;
     this.bodyB[slot] = null;
     this.shapeA[slot] = null;
@@ -249,6 +360,151 @@ export class ContactSet {
     this.flags[slot] = 0;
     this.cache.forget(slot);
     this.freeSlots[this.freeCount++] = slot;
+  }
+
+  /** Puts `slot` at the head of the contact lists of its two bodies (a body outside a world has none). */
+  private link(slot: number): void {
+    const L = this.links;
+    for (let side = 0; side < 2; side += 1) {
+      const id = (side === 0 ? this.bodyA[slot]! : this.bodyB[slot]!).proxyId;
+      if (id < 0) continue;
+      if (id >= L.head.length) L.head = growInt32(L.head, id + 1);
+      const e = 2 * slot + side;
+      const first = L.head[id];
+      L.next[e] = first;
+      L.prev[e] = 0;
+      if (first !== 0) L.prev[first - 1] = e + 1;
+      L.head[id] = e + 1;
+    }
+  }
+
+  /** Takes `slot` out of the contact lists of its two bodies. */
+  private unlink(slot: number): void {
+    const L = this.links;
+    for (let side = 0; side < 2; side += 1) {
+      const body = side === 0 ? this.bodyA[slot] : this.bodyB[slot];
+      if (body === null || body === undefined) continue;
+      const id = body.proxyId;
+      if (id < 0 || id >= L.head.length) continue;
+      const e = 2 * slot + side;
+      const nx = L.next[e];
+      const pv = L.prev[e];
+      if (pv !== 0) L.next[pv - 1] = nx;
+      else if (L.head[id] === e + 1) L.head[id] = nx;
+      else continue; // never linked
+      if (nx !== 0) L.prev[nx - 1] = pv;
+      L.next[e] = 0;
+      L.prev[e] = 0;
+    }
+  }
+
+  /** Rebuilds the contact lists from the slots if a snapshot restore left them stale. */
+  private ensureLinks(): void {
+    const L = this.links;
+    if (!L.stale) return;
+    this.compactOrder();
+    L.head.fill(0);
+    L.next.fill(0);
+    L.prev.fill(0);
+    L.stale = false;
+    for (let i = 0; i < this.count; i += 1) this.link(this.order[i]);
+  }
+
+  /** Closes the holes `removeBody` left in `order`, keeping the key order. O(count) once per batch of removals. */
+  compactOrder(): void {
+    if (this.orderHoles === 0) return;
+    const order = this.order;
+    const total = this.count + this.orderHoles;
+    let o = 0;
+    for (let i = 0; i < total; i += 1) {
+      const slot = order[i];
+      if (this.bodyA[slot] !== null) order[o++] = slot;
+    }
+    this.orderHoles = 0;
+  }
+
+  /**
+   * Gathers the active slots (see `active`) from the contact lists of `bodies[0 .. count)` (the
+   * world's awake bodies; those that do not move are skipped), sorted by key: O(their contacts ·
+   * log), or one pass over `order` when most slots are active. Allocates nothing.
+   */
+  gatherActive(bodies: readonly Body[], count: number): void {
+    this.ensureLinks();
+    this.compactOrder();
+    const L = this.links;
+    const head = L.head;
+    const next = L.next;
+    const mark = L.mark;
+    L.epoch = (L.epoch + 1) | 0;
+    if (L.epoch === 0) {
+      mark.fill(0);
+      L.epoch = 1;
+    }
+    const epoch = L.epoch;
+    const active = this.active;
+    let a = 0;
+    for (let b = 0; b < count; b += 1) {
+      const body = bodies[b];
+      if (!isMoving(body)) continue;
+      const id = body.proxyId;
+      if (id < 0 || id >= head.length) continue;
+      for (let e = head[id]; e !== 0; e = next[e - 1]) {
+        const slot = (e - 1) >> 1;
+        if (mark[slot] === epoch) continue;
+        mark[slot] = epoch;
+        active[a++] = slot;
+      }
+    }
+    if (a > 1 && a * (32 - Math.clz32(a)) > this.count) {
+      // Most slots are active: one pass over `order` lists them in key order.
+      a = 0;
+      for (let i = 0; i < this.count; i += 1) {
+        const slot = this.order[i];
+        if (mark[slot] === epoch) active[a++] = slot;
+      }
+    } else sortSlotsByKey(active, a, this.keys);
+    this.activeCount = a;
+    this.gathered = true;
+  }
+
+  /**
+   * The active slots by a pass over every slot (a set used without a world): pairs of two bodies
+   * that do not move keep their manifold and touching state.
+   */
+  private gatherAllActive(): void {
+    this.compactOrder();
+    let a = 0;
+    for (let i = 0; i < this.count; i += 1) {
+      const slot = this.order[i];
+      if (isMoving(this.bodyA[slot]!) || isMoving(this.bodyB[slot]!)) {
+        this.active[a++] = slot;
+        continue;
+      }
+      const f = this.flags[slot];
+      this.flags[slot] = (f & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0) | (f & (CONTACT_TOUCHING | CONTACT_SENSOR));
+    }
+    this.activeCount = a;
+  }
+
+  /**
+   * @internal The active slots as the contact solver reads a set (`order` / `count` are the
+   * active list; every other field is the set's own array, current as of this call).
+   */
+  solverContacts(): ContactSet {
+    const v = this.solverSet;
+    v.order = this.active;
+    v.count = this.activeCount;
+    v.flags = this.flags;
+    v.manifolds = this.manifolds;
+    v.bodyA = this.bodyA;
+    v.bodyB = this.bodyB;
+    v.normalImpulse = this.normalImpulse;
+    v.approachSpeed = this.approachSpeed;
+    v.patchTangent = this.patchTangent;
+    v.patchTwist = this.patchTwist;
+    v.friction = this.friction;
+    v.restitution = this.restitution;
+    return v as unknown as ContactSet;
   }
 
   /**
@@ -266,6 +522,7 @@ export class ContactSet {
     events: ContactEvents,
   ): void {
     if (removedCount === 0 && addedCount === 0) return;
+    this.compactOrder();
     this.ensureSlots(this.count + addedCount);
     const out = this.orderNext;
     const order = this.order;
@@ -311,6 +568,7 @@ export class ContactSet {
         this.approachSpeed.fill(0, slot * this.pointCapacity, (slot + 1) * this.pointCapacity);
         this.clearPatch(slot);
         this.mixMaterial(slot, A, B);
+        if (!this.links.stale) this.link(slot);
         out[o++] = slot;
       }
     }
@@ -341,6 +599,7 @@ export class ContactSet {
 
   /** Mixes the material of every pair of `body` again (its friction or restitution changed). */
   refreshMaterial(body: Body): void {
+    this.compactOrder();
     for (let i = 0; i < this.count; i += 1) {
       const slot = this.order[i]!;
       const A = this.bodyA[slot]!;
@@ -350,25 +609,46 @@ export class ContactSet {
   }
 
   /**
+   * Calls `visit(other, slot)` for every touching, non-sensor contact of `body` (O(its contacts)):
+   * the links of an island, for waking it.
+   */
+  forEachTouching(body: Body, visit: (other: Body, slot: number) => void): void {
+    this.ensureLinks();
+    const L = this.links;
+    const id = body.proxyId;
+    if (id < 0 || id >= L.head.length) return;
+    for (let e = L.head[id]; e !== 0; e = L.next[e - 1]) {
+      const slot = (e - 1) >> 1;
+      if ((this.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
+      visit(this.bodyA[slot] === body ? this.bodyB[slot]! : this.bodyA[slot]!, slot);
+    }
+  }
+
+  /**
    * Removes every contact of `body` (when it leaves the world). Not for the step. Each pair that
    * was touching records an end event for the next step, and the other body wakes: what rested
-   * on the body must fall (its island wakes with it at the next island pass).
+   * on the body must fall (its island wakes with it). O(contacts of the body): the holes it leaves
+   * in `order` are closed by the next pass over the set (compactOrder).
    */
   removeBody(body: Body, events: ContactEvents): void {
-    let o = 0;
-    for (let i = 0; i < this.count; i += 1) {
-      const slot = this.order[i];
-      const A = this.bodyA[slot];
-      const B = this.bodyB[slot];
-      if (A === body || B === body) {
-        if (this.flags[slot] & CONTACT_TOUCHING) {
-          events.pushEndLater(A!, B!, this.partA[slot]!, this.partB[slot]!);
-          (A === body ? B : A)!.wake();
-        }
-        this.freeSlot(slot);
-      } else this.order[o++] = slot;
+    this.ensureLinks();
+    const L = this.links;
+    const id = body.proxyId;
+    if (id < 0 || id >= L.head.length) return;
+    let e = L.head[id];
+    while (e !== 0) {
+      const slot = (e - 1) >> 1;
+      e = L.next[e - 1];
+      const A = this.bodyA[slot]!;
+      const B = this.bodyB[slot]!;
+      const touching = (this.flags[slot] & CONTACT_TOUCHING) !== 0;
+      if (touching) events.pushEndLater(A, B, this.partA[slot]!, this.partB[slot]!);
+      this.freeSlot(slot);
+      this.count -= 1;
+      this.orderHoles += 1;
+      // (after the slot is freed: waking walks the other body's contacts)
+      if (touching) (A === body ? B : A).wake();
     }
-    this.count = o;
   }
 
   /** @internal The manifold cache of the slots, for world snapshots (snapshot/contacts.ts). */
@@ -383,6 +663,8 @@ export class ContactSet {
    */
   takeSlots(count: number): void {
     if (this.count !== 0) throw new Error('ContactSet.takeSlots: the set must be empty');
+    this.compactOrder();
+    this.links.stale = true;
     this.ensureSlots(count);
     for (let i = 0; i < count; i += 1) this.order[i] = this.allocSlot();
     this.count = count;
@@ -507,8 +789,10 @@ export class ContactSet {
     const reuseTolerance = params.manifoldReuseTolerance;
     const reuseNumbers = this.reuseNumbers;
     reuseNumbers[0] = reuseTolerance;
-    for (let i = 0; i < this.count; i += 1) {
-      const slot = this.order[i];
+    if (!this.gathered) this.gatherAllActive();
+    this.gathered = false;
+    for (let i = 0; i < this.activeCount; i += 1) {
+      const slot = this.active[i];
       const A = this.bodyA[slot]!;
       const B = this.bodyB[slot]!;
       // The shapes and poses of the slot's two proxies: the bodies', or parts of compounds.
@@ -517,11 +801,6 @@ export class ContactSet {
       const pA = this.poseA[slot]!;
       const pB = this.poseB[slot]!;
       let flags = this.flags[slot] & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0;
-      if (!isMoving(A) && !isMoving(B)) {
-        // Asleep against asleep (or static): keep the manifold and the touching state.
-        this.flags[slot] = flags | (this.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR));
-        continue;
-      }
       if (
         (A.jointPeers !== null && A.jointPeers.indexOf(B) >= 0) ||
         (A.groupBits & B.maskBits) === 0 ||

@@ -27,15 +27,22 @@ function isZero(a: Float64Array): boolean {
 }
 
 /**
- * Moves every non-static body by one sub-step. Unchecked hot-path stage; allocates nothing.
+ * Moves the non-static, awake bodies of bodies[0 .. count) (the world's awake set) by one
+ * sub-step. Unchecked hot-path stage; allocates nothing.
  *
  * @param constants - h (s), the rotor iterations and tolerance (see `step-constants.ts`).
- * @returns the index of the first body whose state became non-finite, or -1.
+ * @returns the index in `bodies` of the first body whose state became non-finite, or -1.
  */
-export function integratePositions(D: Dims, bodies: readonly Body[], constants: Float64Array, scratch: RotorStepScratch): number {
+export function integratePositions(
+  D: Dims,
+  bodies: readonly Body[],
+  count: number,
+  constants: Float64Array,
+  scratch: RotorStepScratch,
+): number {
   const n = D.n;
   const h = constants[STEP_H]!;
-  for (let b = 0; b < bodies.length; b += 1) {
+  for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
     const motion = body.motion;
     if (motion === MOTION_STATIC || body.sleeping) continue;

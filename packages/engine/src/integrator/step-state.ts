@@ -2,15 +2,17 @@
  * The start-of-step copy of every body's state, and the finite check that decides whether it is
  * needed.
  *
- * The copy is taken once per `World.step` (one typed-array copy per body, no allocation) so that a
- * step that produces a non-finite number can be undone completely; see `NonFiniteStateError`.
+ * The copy is taken once per `World.step` for the awake bodies (one typed-array copy per body, no
+ * allocation; a body that wakes during the step is copied as it wakes, and a sleeping one does not
+ * change) so that a step that produces a non-finite number can be undone completely; see
+ * `NonFiniteStateError`.
  *
  * @module
  */
 import type { Body } from '../body.js';
 import type { StateField } from '../errors.js';
 
-/** A growable flat array of body states: x, R, v, L, w per body, in world order. */
+/** A growable flat array of body states: x, R, v, L, w per body, at the body's world index. */
 export interface StepSnapshot {
   /** The stored states, `stride` numbers per body. */
   data: Float64Array;
@@ -31,24 +33,22 @@ export function reserveStepSnapshot(snap: StepSnapshot, count: number): void {
   snap.data = new Float64Array(capacity * snap.stride);
 }
 
-/** Copies the state of every body into the snapshot. Unchecked; allocates nothing. */
-export function saveStepState(snap: StepSnapshot, bodies: readonly Body[]): void {
+/** Copies the state of one body into its place (its world index) in the snapshot. */
+export function saveBodyState(snap: StepSnapshot, body: Body): void {
   const data = snap.data;
   const stride = snap.stride;
-  for (let b = 0; b < bodies.length; b += 1) {
-    const view = bodies[b]!.stateView;
-    const base = b * stride;
-    for (let i = 0; i < stride; i += 1) data[base + i] = view[i]!;
-  }
+  const view = body.stateView;
+  const base = body.worldIndex * stride;
+  for (let i = 0; i < stride; i += 1) data[base + i] = view[i]!;
 }
 
-/** Puts every body back to the state saved by {@link saveStepState}. */
-export function restoreStepState(snap: StepSnapshot, bodies: readonly Body[]): void {
+/** Puts bodies[0 .. count) back to the states saved by {@link saveBodyState}. */
+export function restoreBodyStates(snap: StepSnapshot, bodies: readonly Body[], count: number): void {
   const data = snap.data;
   const stride = snap.stride;
-  for (let b = 0; b < bodies.length; b += 1) {
+  for (let b = 0; b < count; b += 1) {
     const view = bodies[b]!.stateView;
-    const base = b * stride;
+    const base = bodies[b]!.worldIndex * stride;
     for (let i = 0; i < stride; i += 1) view[i] = data[base + i]!;
   }
 }

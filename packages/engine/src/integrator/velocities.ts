@@ -17,6 +17,8 @@ import { STEP_ANGULAR_SCALE, STEP_H, STEP_LINEAR_SCALE } from './step-constants.
  * Applies gravity, the accumulated forces and torques and the damping of one sub-step to the
  * velocities and momenta of the dynamic bodies. Unchecked hot-path stage; allocates nothing.
  *
+ * @param bodies - the bodies to visit, bodies[0 .. count) (the world's awake set; static and
+ *   sleeping ones among them are skipped).
  * @param gravity - acceleration of gravity (m/s², n numbers).
  * @param constants - the sub-step length h (s) and the damping factors (see `step-constants.ts`):
  *   v ← v · linearScale, L ← L · angularScale, each skipped when exactly 1.
@@ -25,6 +27,7 @@ import { STEP_ANGULAR_SCALE, STEP_H, STEP_LINEAR_SCALE } from './step-constants.
 export function integrateVelocities(
   D: Dims,
   bodies: readonly Body[],
+  count: number,
   gravity: Float64Array,
   constants: Float64Array,
   tmp: Float64Array,
@@ -33,7 +36,7 @@ export function integrateVelocities(
   const h = constants[STEP_H]!;
   const linearScale = constants[STEP_LINEAR_SCALE]!;
   const angularScale = constants[STEP_ANGULAR_SCALE]!;
-  for (let b = 0; b < bodies.length; b += 1) {
+  for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
     if (body.motion !== MOTION_DYNAMIC || body.sleeping) continue;
     const v = body.v;

@@ -80,6 +80,10 @@ export class JointTree {
   private piv = new Int32Array(64);
   private col: Float64Array;
   private hblk = new Float64Array(64);
+  /** The tree bodies' v and ω after the last `passVelocities` solve (bs per body node). */
+  private saved = new Float64Array(64);
+  /** 1 while `saved` belongs to the current factorisation. */
+  private savedOk = 0;
 
   constructor(D: Dims) {
     this.n = D.n;
@@ -94,6 +98,7 @@ export class JointTree {
    */
   build(js: JointSolver, sb: SolverBodies): number {
     const count = js.count;
+    this.savedOk = 0;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -353,6 +358,7 @@ export class JointTree {
    * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip.
    */
   factor(js: JointSolver, sb: SolverBodies): void {
+    this.savedOk = 0;
     this.assemble(js, sb);
     const mat = this.mat;
     let maxSize = 0;
@@ -498,6 +504,39 @@ export class JointTree {
         row += js.jBlock[j];
       }
     }
+  }
+
+  /**
+   * A pass of the solver over the forest: `solveVelocities`, unless no velocity of a tree body
+   * changed since the last one of this factorisation (nothing else moved them: the rows are met
+   * already, and a solve would only move λ by rounding).
+   */
+  passVelocities(js: JointSolver, sb: SolverBodies): void {
+    if (this.treeJoints === 0) return;
+    const { n, k, bs } = this;
+    const V = sb.v;
+    const W = sb.w;
+    const saved = this.saved;
+    if (this.savedOk === 1) {
+      let same = 1;
+      for (let i = 0, at = 0; i < this.nodeCount && same === 1; i += 1) {
+        if (this.nKind[i] === 1) continue;
+        const slot = this.nRef[i];
+        for (let d = 0; d < n; d += 1) if (saved[at++] !== V[slot * n + d]) same = 0;
+        for (let p = 0; p < k; p += 1) if (saved[at++] !== W[slot * k + p]) same = 0;
+      }
+      if (same === 1) return;
+    }
+    this.solveVelocities(js, sb);
+    if (saved.length < this.nodeCount * bs) this.saved = growFloat64(this.saved, this.nodeCount * bs, 0);
+    const out = this.saved;
+    for (let i = 0, at = 0; i < this.nodeCount; i += 1) {
+      if (this.nKind[i] === 1) continue;
+      const slot = this.nRef[i];
+      for (let d = 0; d < n; d += 1) out[at++] = V[slot * n + d];
+      for (let p = 0; p < k; p += 1) out[at++] = W[slot * k + p];
+    }
+    this.savedOk = 1;
   }
 
   /** One exact velocity solve of every equality row of the forest (a pass of the solver). */

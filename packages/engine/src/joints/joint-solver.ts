@@ -983,11 +983,25 @@ export class JointSolver {
     const { n, k } = this;
     for (let d = 0; d < n; d += 1) sb.v[slot * n + d] = body.v[d];
     for (let p = 0; p < k; p += 1) sb.w[slot * k + p] = body.w[p];
-    const rot = this.rotB;
-    bivectorRotationInto(this.D, rot, body.pose!.M);
     const inv = body.invInertia;
     const I = body.inertia;
     const at = slot * k * k;
+    let iso = true;
+    for (let q = 1; q < k; q += 1) if (inv[q] !== inv[0] || I[q] !== I[0]) iso = false;
+    if (iso) {
+      // As the solver bodies do (SolverBodies.worldInverseInertia): an isotropic body's world
+      // inertia is its body inertia, exactly; so the next prepare finds the same input and the
+      // tree keeps this factorisation (JointTree.sameInput).
+      sb.invInertia.fill(0, at, at + k * k);
+      sb.inertia.fill(0, at, at + k * k);
+      for (let r = 0; r < k; r += 1) {
+        sb.invInertia[at + r * k + r] = inv[0];
+        sb.inertia[at + r * k + r] = I[0];
+      }
+      return;
+    }
+    const rot = this.rotB;
+    bivectorRotationInto(this.D, rot, body.pose!.M);
     for (let r = 0; r < k; r += 1) {
       for (let c = r; c < k; c += 1) {
         let s2 = 0;

@@ -109,6 +109,18 @@ const VELOCITY_PROJECTION_PASSES = 3;
 const POSITION_TOLERANCE = 0.01;
 const POSITION_PASSES_FACTOR = 4;
 
+/**
+ * The position projection reuses the tree's factorisation while each pass leaves at most this
+ * fraction of the residual of the pass before.
+ */
+const REUSE_RATE = 0.05;
+
+/** A residual this small (m or rad) is rounding: the position projection stops. */
+const FINE_RESIDUAL = 2.5e-16;
+
+/** Below this residual, a chord step that no longer shrinks it has met rounding: the projection stops. */
+const FLOOR_RESIDUAL = 1e-12;
+
 /** A rigid joint whose error ends a sub-step past this × constraintSlop is stretched. */
 const STRETCH_FACTOR = 10;
 
@@ -208,6 +220,9 @@ export class JointSolver {
   private readonly tree: JointTree;
   private vecC: Float64Array;
   private vecX: Float64Array;
+  /** Per joint: jFirst·65536 + jBlock when the tree was last factored in the projection. */
+  private layoutBlock = new Int32Array(16);
+  private layoutRows = -1;
 
   constructor(D: Dims) {
     const { n, k, r } = D;
@@ -684,7 +699,7 @@ export class JointSolver {
         this.applyRow(sb, q, a, b);
       }
     }
-    if (this.tree.treeJoints > 0 && scalars === 1) this.tree.solveVelocities(this, sb);
+    if (this.tree.treeJoints > 0 && scalars === 1) this.tree.passVelocities(this, sb);
   }
 
   /**
@@ -751,6 +766,16 @@ export class JointSolver {
     }
     const tolerance = POSITION_TOLERANCE * this.sc[SC_SLOP];
     const most = iterations * POSITION_PASSES_FACTOR;
+    // The tree is factored at the first pass and its factorisation reused (a chord Newton step)
+    // while the rows keep their layout and each pass shrinks the residual at least REUSE_RATE-fold;
+    // a pass that converges slower, or a changed layout, factors again. Chord steps converge
+    // linearly where Newton steps converge quadratically, so after a chord step the projection
+    // stops only at the rounding floor (FINE_RESIDUAL, or no longer shrinking), never merely
+    // within the tolerance: it ends as accurate as the Newton passes it replaces.
+    let factored = 0;
+    let chord = 0;
+    let late = 0;
+    let before = Infinity;
     for (let it = 0; it < most; it += 1) {
       // Rows from the current poses (the impulses were stored already).
       this.rowCount = 0;
@@ -763,15 +788,37 @@ export class JointSolver {
         this.joints[j].buildRows(this, j);
       }
       this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
-      // Past the `iterations` passes, the projection goes on only while an error is left.
-      if (it >= iterations && this.rigidResidual() <= tolerance) break;
-      // The tree is factored again at the current poses (with the Jacobians of the start of
-      // the sub-step, a whipping chain's projection diverges), with the geometric stiffness.
-      if (this.tree.build(this, sb) > 0) {
+      const residual = this.rigidResidual();
+      // An error at the level of rounding ends the projection at once.
+      if (residual <= FINE_RESIDUAL) break;
+      const canReuse = factored === 1 && this.sameLayout() === 1;
+      // A chord step that no longer shrinks the error by REUSE_RATE: at the rounding floor, the
+      // projection is done; above it, the tree is factored again.
+      const stalled = chord === 1 && residual > REUSE_RATE * before;
+      if (stalled && residual <= FLOOR_RESIDUAL) break;
+      // Past the `iterations` passes, the projection goes on only while an error is left, or
+      // while a chord step (cheap) still shrinks it; a chord step that stalls within the
+      // tolerance gets one more Newton step (factored past the `iterations` passes) first.
+      if (it >= iterations && residual <= tolerance && (canReuse === false || (stalled && late === 1))) break;
+      const reuse = canReuse && (residual <= REUSE_RATE * before || (it >= iterations && residual <= tolerance));
+      before = residual;
+      if (reuse) {
+        this.tree.solvePositions(this, sb);
+        chord = 1;
+      } else if (this.tree.build(this, sb) > 0) {
+        // The tree is factored at the current poses (with the Jacobians of the start of the
+        // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
         this.tree.stiffness = this.sc[SC_H];
         this.tree.factor(this, sb);
         this.tree.stiffness = 0;
         this.tree.solvePositions(this, sb);
+        this.saveLayout();
+        factored = 1;
+        chord = 0;
+        if (it >= iterations) late = 1;
+      } else {
+        factored = 0;
+        chord = 0;
       }
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
@@ -783,6 +830,20 @@ export class JointSolver {
       if (joint.b !== null && joint.b.motion === MOTION_DYNAMIC) joint.b.omegaFromMomentum();
     }
     this.projectVelocities(sb);
+  }
+
+  /** Records the row layout the tree was factored with (`sameLayout` compares against it). */
+  private saveLayout(): void {
+    if (this.layoutBlock.length < this.count) this.layoutBlock = growInt32(this.layoutBlock, this.count);
+    for (let j = 0; j < this.count; j += 1) this.layoutBlock[j] = this.jFirst[j] * 65536 + this.jBlock[j];
+    this.layoutRows = this.rowCount;
+  }
+
+  /** 1 when the rows just built have the layout of the last factorisation (`saveLayout`). */
+  private sameLayout(): number {
+    if (this.rowCount !== this.layoutRows) return 0;
+    for (let j = 0; j < this.count; j += 1) if (this.layoutBlock[j] !== this.jFirst[j] * 65536 + this.jBlock[j]) return 0;
+    return 1;
   }
 
   /**
@@ -922,11 +983,25 @@ export class JointSolver {
     const { n, k } = this;
     for (let d = 0; d < n; d += 1) sb.v[slot * n + d] = body.v[d];
     for (let p = 0; p < k; p += 1) sb.w[slot * k + p] = body.w[p];
-    const rot = this.rotB;
-    bivectorRotationInto(this.D, rot, body.pose!.M);
     const inv = body.invInertia;
     const I = body.inertia;
     const at = slot * k * k;
+    let iso = true;
+    for (let q = 1; q < k; q += 1) if (inv[q] !== inv[0] || I[q] !== I[0]) iso = false;
+    if (iso) {
+      // As the solver bodies do (SolverBodies.worldInverseInertia): an isotropic body's world
+      // inertia is its body inertia, exactly; so the next prepare finds the same input and the
+      // tree keeps this factorisation (JointTree.sameInput).
+      sb.invInertia.fill(0, at, at + k * k);
+      sb.inertia.fill(0, at, at + k * k);
+      for (let r = 0; r < k; r += 1) {
+        sb.invInertia[at + r * k + r] = inv[0];
+        sb.inertia[at + r * k + r] = I[0];
+      }
+      return;
+    }
+    const rot = this.rotB;
+    bivectorRotationInto(this.D, rot, body.pose!.M);
     for (let r = 0; r < k; r += 1) {
       for (let c = r; c < k; c += 1) {
         let s2 = 0;

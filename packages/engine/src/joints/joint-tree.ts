@@ -80,6 +80,25 @@ export class JointTree {
   private piv = new Int32Array(64);
   private col: Float64Array;
   private hblk = new Float64Array(64);
+  /** Size of the D blocks in `mat` (the W blocks follow). */
+  private dSize = 0;
+  /** The tree bodies' v and ω after the last `passVelocities` solve (bs per body node). */
+  private saved = new Float64Array(64);
+  /** 1 while `saved` belongs to the current factorisation. */
+  private savedOk = 0;
+  /**
+   * What the last `factor` factored: the assembled D blocks (before their LU), the Jacobians of
+   * the joint nodes' rows and the forest's shape. A `factor` whose input is the same, bit for bit,
+   * keeps the factorisation (the velocity projection's, at the end of a sub-step, is the next
+   * prepare's when nothing moved in between: the same poses, inertia and impulses).
+   */
+  private inD = new Float64Array(64);
+  private lastD = new Float64Array(64);
+  private lastJ = new Float64Array(64);
+  private lastShape = new Int32Array(64);
+  private lastSize = -1;
+  /** 1 while `mat` holds the factorisation of the last input (`lastD`, `lastJ`, `lastShape`). */
+  private lastOk = 0;
 
   constructor(D: Dims) {
     this.n = D.n;
@@ -94,6 +113,7 @@ export class JointTree {
    */
   build(js: JointSolver, sb: SolverBodies): number {
     const count = js.count;
+    this.savedOk = 0;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -221,7 +241,11 @@ export class JointTree {
       this.nW[i] = dOff + wOff;
       if (p >= 0) wOff += this.nSize[i] * this.nSize[p];
     }
-    if (dOff + wOff > this.mat.length) this.mat = growFloat64(this.mat, dOff + wOff, 0);
+    if (dOff + wOff > this.mat.length) {
+      this.mat = growFloat64(this.mat, dOff + wOff, 0);
+      this.lastOk = 0;
+    }
+    this.dSize = dOff;
     this.vec = growFloat64(this.vec, vOff, 0);
     this.piv = growInt32(this.piv, 2 * vOff, 0);
     return this.treeJoints;
@@ -310,9 +334,8 @@ export class JointTree {
   }
 
   /** Writes H_ii of every node into its D block. */
-  private assemble(js: JointSolver, sb: SolverBodies): void {
+  private assemble(js: JointSolver, sb: SolverBodies, mat: Float64Array): void {
     const { n, k, bs } = this;
-    const mat = this.mat;
     for (let i = 0; i < this.nodeCount; i += 1) {
       const s = this.nSize[i];
       const d0 = this.nD[i];
@@ -349,11 +372,110 @@ export class JointTree {
   }
 
   /**
+   * Assembles the D blocks into `inD` and returns 1 when they, the Jacobians of the joint nodes'
+   * rows and the forest's shape are those of the factorisation `mat` holds (nothing to do);
+   * otherwise copies the blocks into `mat`, records the input and returns 0.
+   */
+  private sameInput(js: JointSolver, sb: SolverBodies): number {
+    const N = this.nodeCount;
+    const dSize = this.dSize;
+    if (this.inD.length < dSize) this.inD = growFloat64(this.inD, dSize, 0);
+    const inD = this.inD;
+    this.assemble(js, sb, inD);
+    // The joint nodes' Jacobians (with the sides: the sign of a coupling) and the shape.
+    const RS = js.RS;
+    const width = this.n + 2 * this.k;
+    let jLen = 0;
+    for (let i = 0; i < N; i += 1) if (this.nKind[i] === 1) jLen += this.nSize[i] * width;
+    const shapeLen = 1 + 6 * N;
+    let same = this.lastOk === 1 && this.lastSize === dSize ? 1 : 0;
+    if (same === 1 && (this.lastJ.length < jLen || this.lastShape.length < shapeLen)) same = 0;
+    const shape = this.lastShape;
+    if (same === 1) {
+      if (shape[0] !== N) same = 0;
+      for (let i = 0, at = 1; i < N && same === 1; i += 1, at += 6) {
+        const j = this.nRef[i];
+        const kind = this.nKind[i];
+        if (
+          shape[at] !== kind ||
+          shape[at + 1] !== j ||
+          shape[at + 2] !== this.nParent[i] ||
+          shape[at + 3] !== this.nSize[i] ||
+          shape[at + 4] !== this.nOrder[i] ||
+          shape[at + 5] !== (kind === 1 ? js.jA[j] * 65536 + js.jB[j] : 0)
+        )
+          same = 0;
+      }
+    }
+    if (same === 1) {
+      const lastD = this.lastD;
+      for (let q = 0; q < dSize; q += 1) {
+        if (inD[q] !== lastD[q]) {
+          same = 0;
+          break;
+        }
+      }
+    }
+    if (same === 1) {
+      const lastJ = this.lastJ;
+      const rows = js.rows;
+      for (let i = 0, at = 0; i < N && same === 1; i += 1) {
+        if (this.nKind[i] !== 1) continue;
+        const first = js.jFirst[this.nRef[i]];
+        for (let r = 0; r < this.nSize[i] && same === 1; r += 1) {
+          const base = (first + r) * RS;
+          for (let c = 0; c < width; c += 1) {
+            if (lastJ[at++] !== rows[base + c]) {
+              same = 0;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (same === 1) return 1;
+    // Record this input, and hand the blocks to the factorisation.
+    if (this.lastD.length < dSize) this.lastD = growFloat64(this.lastD, dSize, 0);
+    const mat = this.mat;
+    const lastD = this.lastD;
+    for (let q = 0; q < dSize; q += 1) {
+      mat[q] = inD[q];
+      lastD[q] = inD[q];
+    }
+    if (this.lastJ.length < jLen) this.lastJ = growFloat64(this.lastJ, jLen, 0);
+    if (this.lastShape.length < shapeLen) this.lastShape = growInt32(this.lastShape, shapeLen, 0);
+    const lastJ = this.lastJ;
+    const out = this.lastShape;
+    const rows = js.rows;
+    out[0] = N;
+    for (let i = 0, at = 1, jAt = 0; i < N; i += 1, at += 6) {
+      const j = this.nRef[i];
+      const kind = this.nKind[i];
+      out[at] = kind;
+      out[at + 1] = j;
+      out[at + 2] = this.nParent[i];
+      out[at + 3] = this.nSize[i];
+      out[at + 4] = this.nOrder[i];
+      out[at + 5] = kind === 1 ? js.jA[j] * 65536 + js.jB[j] : 0;
+      if (kind !== 1) continue;
+      const first = js.jFirst[j];
+      for (let r = 0; r < this.nSize[i]; r += 1) {
+        const base = (first + r) * RS;
+        for (let c = 0; c < width; c += 1) lastJ[jAt++] = rows[base + c];
+      }
+    }
+    this.lastSize = dSize;
+    this.lastOk = 1;
+    return 0;
+  }
+
+  /**
    * Factors the forest: for each node, leaves first, D_i = H_ii − Σ_children H_ic W_c (done as the
    * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip.
    */
   factor(js: JointSolver, sb: SolverBodies): void {
-    this.assemble(js, sb);
+    this.savedOk = 0;
+    if (this.sameInput(js, sb) === 1) return;
     const mat = this.mat;
     let maxSize = 0;
     for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];
@@ -498,6 +620,39 @@ export class JointTree {
         row += js.jBlock[j];
       }
     }
+  }
+
+  /**
+   * A pass of the solver over the forest: `solveVelocities`, unless no velocity of a tree body
+   * changed since the last one of this factorisation (nothing else moved them: the rows are met
+   * already, and a solve would only move λ by rounding).
+   */
+  passVelocities(js: JointSolver, sb: SolverBodies): void {
+    if (this.treeJoints === 0) return;
+    const { n, k, bs } = this;
+    const V = sb.v;
+    const W = sb.w;
+    const saved = this.saved;
+    if (this.savedOk === 1) {
+      let same = 1;
+      for (let i = 0, at = 0; i < this.nodeCount && same === 1; i += 1) {
+        if (this.nKind[i] === 1) continue;
+        const slot = this.nRef[i];
+        for (let d = 0; d < n; d += 1) if (saved[at++] !== V[slot * n + d]) same = 0;
+        for (let p = 0; p < k; p += 1) if (saved[at++] !== W[slot * k + p]) same = 0;
+      }
+      if (same === 1) return;
+    }
+    this.solveVelocities(js, sb);
+    if (saved.length < this.nodeCount * bs) this.saved = growFloat64(this.saved, this.nodeCount * bs, 0);
+    const out = this.saved;
+    for (let i = 0, at = 0; i < this.nodeCount; i += 1) {
+      if (this.nKind[i] === 1) continue;
+      const slot = this.nRef[i];
+      for (let d = 0; d < n; d += 1) out[at++] = V[slot * n + d];
+      for (let p = 0; p < k; p += 1) out[at++] = W[slot * k + p];
+    }
+    this.savedOk = 1;
   }
 
   /** One exact velocity solve of every equality row of the forest (a pass of the solver). */

@@ -165,8 +165,11 @@ function contactsOf(world: World): ContactSet {
   return (world as unknown as { contacts: ContactSet }).contacts;
 }
 
-/** Largest |s_world − s_fresh| over the box–box contacts, by feature id (fresh = narrowphase now). */
-function worstBoxBoxError(world: World): { worst: number; pairs: number } {
+/**
+ * Largest |s_world − s_fresh| by feature id over the contacts whose pair `keep` accepts, and the
+ * count of those pairs (fresh = the narrowphase now, through the dispatch the world uses).
+ */
+function worstSeparationError(world: World, keep: (kindA: string, kindB: string) => boolean): { worst: number; pairs: number } {
   const set = contactsOf(world);
   const n = world.n;
   let worst = 0;
@@ -175,14 +178,14 @@ function worstBoxBoxError(world: World): { worst: number; pairs: number } {
     const slot = set.order[i]!;
     const A = set.bodyA[slot] as Body;
     const B = set.bodyB[slot] as Body;
-    if (A.shape.kind !== 'box' || B.shape.kind !== 'box') continue;
+    if (!keep(A.shape.kind, B.shape.kind)) continue;
     const m = set.manifolds[slot]!;
     if (m.count === 0) continue;
     pairs += 1;
     const fresh = createManifold(n, maxManifoldPoints(n));
-    const ha = (A.shape as unknown as { halfExtents: Float64Array }).halfExtents;
-    const hb = (B.shape as unknown as { halfExtents: Float64Array }).halfExtents;
-    collideBoxBox(fresh, n, box(ha), A.pose!, box(hb), B.pose!, MARGIN, createNarrowphaseScratch(n));
+    const sA = A.shape as unknown as CollidableShape;
+    const sB = B.shape as unknown as CollidableShape;
+    collideShapes(fresh, n, sA, A.pose!, sB, B.pose!, MARGIN, createNarrowphaseScratch(n));
     const want = byId(fresh);
     for (const [id, got] of byId(m)) {
       const w = want.get(id);
@@ -192,6 +195,9 @@ function worstBoxBoxError(world: World): { worst: number; pairs: number } {
   return { worst, pairs };
 }
 
+const boxBox = (a: string, b: string): boolean => a === 'box' && b === 'box';
+const withMesh = (a: string, b: string): boolean => a === 'mesh' || b === 'mesh';
+
 describe('manifold reuse in the world', () => {
   for (const n of [3, 4]) {
     it(`n = ${n}: a resting stack of 3: every box–box separation stays within the tolerance of a fresh narrowphase (300 steps)`, () => {
@@ -200,7 +206,7 @@ describe('manifold reuse in the world', () => {
       addStack(world, 3, HALF, { friction: 0.5 });
       let worst = 0;
       run(world, 300, 1 / 60, () => {
-        const r = worstBoxBoxError(world);
+        const r = worstSeparationError(world, boxBox);
         expect(r.pairs).toBe(2);
         worst = Math.max(worst, r.worst);
       });
@@ -243,33 +249,6 @@ describe('manifold reuse in the world', () => {
   }
 });
 
-/** Largest |s_world − s_fresh| over the contacts with a convex mesh, by feature id, and the count of those pairs. */
-function worstMeshError(world: World): { worst: number; pairs: number } {
-  const set = contactsOf(world);
-  const n = world.n;
-  let worst = 0;
-  let pairs = 0;
-  for (let i = 0; i < set.count; i += 1) {
-    const slot = set.order[i]!;
-    const A = set.bodyA[slot] as Body;
-    const B = set.bodyB[slot] as Body;
-    if (A.shape.kind !== 'mesh' && B.shape.kind !== 'mesh') continue;
-    const m = set.manifolds[slot]!;
-    if (m.count === 0) continue;
-    pairs += 1;
-    const fresh = createManifold(n, maxManifoldPoints(n));
-    const sA = A.shape as unknown as CollidableShape;
-    const sB = B.shape as unknown as CollidableShape;
-    collideShapes(fresh, n, sA, A.pose!, sB, B.pose!, MARGIN, createNarrowphaseScratch(n));
-    const want = byId(fresh);
-    for (const [id, got] of byId(m)) {
-      const w = want.get(id);
-      if (w !== undefined) worst = Math.max(worst, Math.abs(got.s - w.s));
-    }
-  }
-  return { worst, pairs };
-}
-
 describe('manifold reuse for convex meshes in the world', () => {
   for (const n of [3, 4]) {
     it(`n = ${n}: two convex-mesh cubes stacked on a static box: reused, every separation within the tolerance of a fresh narrowphase (300 steps)`, () => {
@@ -293,7 +272,7 @@ describe('manifold reuse for convex meshes in the world', () => {
       };
       let worst = 0;
       run(world, 300, 1 / 60, () => {
-        const r = worstMeshError(world);
+        const r = worstSeparationError(world, withMesh);
         expect(r.pairs).toBe(2);
         worst = Math.max(worst, r.worst);
       });

@@ -196,7 +196,9 @@ export abstract class Mesh extends THREE.Mesh<THREE.BufferGeometry, THREE.Materi
   /** The compound of this mesh's shape (at the body's origin) and its child meshes' shapes. */
   private describeParts(n: number, children: readonly Mesh[]): ShapeDescription {
     const where = `${this.constructor.name} (a compound body)`;
-    const parts: { shape: ShapeDescription; position?: Float64Array; rotor?: Float64Array }[] = [{ shape: this.describeShape(n) }];
+    const parts: { shape: ShapeDescription; position?: Float64Array; rotor?: Float64Array }[] = [
+      { shape: this.describeShape(n) },
+    ];
     for (const child of children) {
       if (child.dimensions === null) child.setDimensions(n, where);
       if (child.dimensions !== n)

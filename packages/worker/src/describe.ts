@@ -77,11 +77,15 @@ export function buildShape(D: Dims, desc: ShapeDescription, where: string): Shap
 /** Builds a compound from its part descriptions (the engine's `Compound` validates the placements). */
 function buildCompound(D: Dims, parts: unknown, where: string): Shape {
   if (!Array.isArray(parts)) {
-    throw new TypeError(`${where}: 'shape.parts' of a compound must be an array of { shape, position?, rotor? }, got ${describeValue(parts)}`);
+    throw new TypeError(
+      `${where}: 'shape.parts' of a compound must be an array of { shape, position?, rotor? }, got ${describeValue(parts)}`,
+    );
   }
   const built = parts.map((part: unknown, i) => {
     if (!isObject(part) || Array.isArray(part)) {
-      throw new TypeError(`${where}: 'shape.parts'[${i}] must be an object { shape, position?, rotor? }, got ${describeValue(part)}`);
+      throw new TypeError(
+        `${where}: 'shape.parts'[${i}] must be an object { shape, position?, rotor? }, got ${describeValue(part)}`,
+      );
     }
     const { shape, ...placement } = part as unknown as CompoundPartDescription;
     return { ...placement, shape: buildShape(D, shape, `${where} (shape.parts[${i}])`) };

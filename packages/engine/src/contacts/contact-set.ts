@@ -23,7 +23,7 @@ import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
 import type { ContactEvents } from './contact-events.js';
-import { loadReuseRadius, ManifoldCache } from './manifold-cache.js';
+import { ManifoldCache } from './manifold-cache.js';
 
 export { growFloat64, growInt32 } from './grow.js';
 import { growFloat64, growInt32 } from './grow.js';
@@ -846,7 +846,9 @@ export class ContactSet {
       const reusable =
         !sensor && reuseTolerance > 0 && (sA.kind === 'box' || sA.kind === 'mesh') && (sB.kind === 'box' || sB.kind === 'mesh');
       if (reusable) {
-        loadReuseRadius(n, sB as never, reuseNumbers);
+        // ρ_B: the body's bounding radius, kept since it was built (for a compound's part, the
+        // whole body's: larger than the part's own, so the check errs toward a fresh manifold)
+        reuseNumbers[1] = B.boundingRadius;
         if (this.cache.check(slot, pA, pB, reuseNumbers)) {
           this.cache.reuse(slot, m, pA, pB);
           let touching = false;

@@ -27,31 +27,6 @@ import type { Manifold, Pose } from '../collision/manifold.js';
 import { pointToLocal } from '../collision/manifold.js';
 import { growFloat64 } from './grow.js';
 
-/**
- * Writes into numbers[1] the radius ρ of a polytope shape about its origin (a box: |half
- * extents|; a convex mesh: its farthest vertex), the ρ_B that {@link ManifoldCache.check} reads.
- * (Through the array: a double returned from a call V8 does not inline would be boxed.)
- */
-export function loadReuseRadius(
-  n: number,
-  shape: { readonly kind: string; readonly halfExtents?: ArrayLike<number>; readonly vertices?: ArrayLike<number> },
-  numbers: Float64Array,
-): void {
-  let r2 = 0;
-  if (shape.kind === 'box') {
-    const h = shape.halfExtents!;
-    for (let c = 0; c < n; c += 1) r2 += h[c]! * h[c]!;
-  } else {
-    const V = shape.vertices!;
-    for (let k = 0; k < V.length; k += n) {
-      let s = 0;
-      for (let c = 0; c < n; c += 1) s += V[k + c]! * V[k + c]!;
-      if (s > r2) r2 = s;
-    }
-  }
-  numbers[1] = Math.sqrt(r2);
-}
-
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
 export class ManifoldCache {
   private readonly n: number;

@@ -5,12 +5,13 @@
  * - waking one body of one island wakes exactly that island's bodies, not a second separate one,
  *   and the step then visits those bodies and their contacts alone;
  * - removing a body in the middle of a sleeping pile wakes what touched it (and its island);
+ * - `stats.islands` counts the awake islands: contacts and joints link, a floor does not;
  * - a world that slept and woke steps bit-identically to its restored copy (whose awake set is
  *   built afresh), and the order in which bodies woke changes no bit.
  */
 import { describe, expect, it } from 'vitest';
 import type { Body as BodyType, Dims } from '@physin/engine';
-import { Body, HalfSpace, HyperBox, HyperSphere, World, dims, restoreWorld, snapshotWorld } from '@physin/engine';
+import { Body, DistanceJoint, HalfSpace, HyperBox, HyperSphere, World, dims, restoreWorld, snapshotWorld } from '@physin/engine';
 
 const DT = 1 / 60;
 const R = 0.5;
@@ -64,10 +65,13 @@ describe('the awake set: a step visits awake bodies and their contacts alone', (
     // Every dynamic body is visited (the static floor is not); every pair has a moving body.
     expect(world.stats.bodiesVisited).toBe(206);
     expect(world.stats.pairsVisited).toBe(world.stats.contacts);
+    // 10 rows of balls and 2 columns: the floor links nothing.
+    expect(world.stats.islands).toBe(12);
     expect(stepUntilAsleep(world, 600)).toBeGreaterThan(0);
     world.step(DT);
     let s = world.stats;
     expect(s.awakeBodies).toBe(0);
+    expect(s.islands).toBe(0);
     expect(s.bodiesVisited).toBe(0);
     expect(s.pairsVisited).toBe(0);
     // The contacts stand, untouched: ball–floor 200, ball–ball 10 × 19, box–floor 2, box–box 4.
@@ -85,6 +89,7 @@ describe('the awake set: a step visits awake bodies and their contacts alone', (
     expect(colB.every((b) => b.isSleeping)).toBe(true);
     expect(balls.every((b) => b.isSleeping)).toBe(true);
     expect(s.bodiesVisited).toBe(3);
+    expect(s.islands).toBe(1);
     // Floor–box and two box–box contacts.
     expect(s.pairsVisited).toBe(3);
 
@@ -95,6 +100,7 @@ describe('the awake set: a step visits awake bodies and their contacts alone', (
     world.step(DT);
     s = world.stats;
     expect(s.bodiesVisited).toBe(23);
+    expect(s.islands).toBe(2);
     // Row 4: 20 ball–floor and 19 ball–ball contacts; column A: 3.
     expect(s.pairsVisited).toBe(20 + 19 + 3);
 
@@ -139,6 +145,8 @@ describe('the awake set: a step visits awake bodies and their contacts alone', (
     expect(world.stats.awakeBodies).toBe(19);
     world.step(DT);
     expect(world.stats.bodiesVisited).toBe(19);
+    // The row is cut in two: balls 20..29 and 31..39.
+    expect(world.stats.islands).toBe(2);
     // 19 ball–floor, 17 ball–ball (the row is cut in two).
     expect(world.stats.pairsVisited).toBe(19 + 17);
   });
@@ -179,5 +187,29 @@ describe('the awake set: a step visits awake bodies and their contacts alone', (
       b.world.step(DT);
     }
     expect(snapshotWorld(b.world)).toEqual(snapshotWorld(a.world));
+  });
+
+  it.each([2, 3, 4, 5, 6])('n = %i: stats.islands counts groups linked by contacts and joints, never through the floor', (n) => {
+    const { world } = ballCarpet(n, 0, 1, new Array<number>(n).fill(0));
+    const D = dims(n);
+    // Three pairs of touching balls along x, 3 m apart: three islands.
+    const balls: BodyType[] = [];
+    for (let i = 0; i < 6; i += 1) {
+      const p = new Array<number>(n).fill(0);
+      p[0] = Math.floor(i / 2) * 3 + (i % 2) * 2 * R;
+      p[1] = R;
+      balls.push(world.addBody(new Body(D, { shape: HyperSphere(D, R), mass: 1, position: p })));
+    }
+    world.step(DT);
+    expect(world.stats.islands).toBe(3);
+    // A distance joint between the first and the last pair links them: two islands.
+    const zero = new Array<number>(n).fill(0);
+    world.addConstraint(new DistanceJoint(balls[0]!, balls[5]!, zero, zero));
+    world.step(DT);
+    expect(world.stats.islands).toBe(2);
+    // A joint to the world links nothing else: still two.
+    world.addConstraint(new DistanceJoint(balls[2]!, null, zero, balls[2]!.x));
+    world.step(DT);
+    expect(world.stats.islands).toBe(2);
   });
 });

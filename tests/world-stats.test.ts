@@ -13,6 +13,7 @@ describe('world.stats', () => {
     expect(world.stats).toEqual({
       bodies: 0,
       awakeBodies: 0,
+      islands: 0,
       bodiesVisited: 0,
       pairsVisited: 0,
       joints: 0,
@@ -33,6 +34,8 @@ describe('world.stats', () => {
     const s = world.stats;
     expect(s.bodies).toBe(5);
     expect(s.awakeBodies).toBe(4);
+    // The stack of three boxes, and the ball on its joint to the world.
+    expect(s.islands).toBe(2);
     expect(s.joints).toBe(1);
     // Floor–box, box–box, box–box: three pairs, each touching, four points a face.
     expect(s.pairs).toBe(3);

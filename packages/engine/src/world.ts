@@ -62,6 +62,12 @@ export interface WorldStats {
   /** Dynamic bodies that are awake (integrated and solved). */
   readonly awakeBodies: number;
   /**
+   * Islands of the awake dynamic bodies: groups linked by touching contacts and joints (static
+   * and kinematic bodies link nothing), as the island pass builds them, counted when read.
+   * A sleeping island counts 0; two boxes on one floor, apart, count 2.
+   */
+  readonly islands: number;
+  /**
    * Bodies the last sub-step visited (integrated and moved in the broadphase): the awake set,
    * awake dynamic and kinematic bodies. Sleeping and static bodies cost the step nothing.
    */
@@ -465,6 +471,7 @@ export class WorldBase {
     return Object.freeze({
       bodies: this.bodyList.length,
       awakeBodies: awake,
+      islands: this.islands.count(set, this.contacts, this.jointList),
       bodiesVisited: set.visitedBodies,
       pairsVisited: set.visitedPairs,
       joints: this.jointList.length,

@@ -266,14 +266,10 @@ export class Islands {
     awake.sort();
     const bodies = awake.list;
     const count = awake.count;
-    this.parent = growInt32(this.parent, count);
-    this.minTimer = growFloat64(this.minTimer, count);
-    if (this.change.length < count) this.change = new Uint8Array(this.parent.length);
-    const parent = this.parent;
+    this.reserve(count);
     const lin2 = linear * linear;
     const ang2 = angular * angular;
     for (let i = 0; i < count; i += 1) {
-      parent[i] = i;
       const body = bodies[i];
       if (body.motion !== MOTION_DYNAMIC) continue;
       let v2 = 0;
@@ -282,17 +278,7 @@ export class Islands {
       for (let p = 0; p < body.w.length; p += 1) w2 += body.w[p] * body.w[p];
       body.sleepTimer = v2 > lin2 || w2 > ang2 ? 0 : body.sleepTimer + h;
     }
-    // Positions in the awake list: every dynamic body of an active touching contact is awake now.
-    for (let c = 0; c < activeCount; c += 1) {
-      const slot = active[c];
-      if ((contacts.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
-      this.link(awake, contacts.bodyA[slot] as Body, contacts.bodyB[slot] as Body);
-    }
-    // A joint links its two bodies as a touching contact does.
-    for (let j = 0; j < joints.length; j += 1) {
-      const B = joints[j].b;
-      if (B !== null) this.link(awake, joints[j].a, B);
-    }
+    this.build(awake, contacts, joints, true);
     const minTimer = this.minTimer;
     minTimer.fill(Infinity, 0, count);
     for (let i = 0; i < count; i += 1) {
@@ -310,13 +296,59 @@ export class Islands {
     for (let i = 0; i < count; i += 1) if (change[i] !== 0) setSleeping(bodies[i], true);
   }
 
+  /**
+   * Counts the islands of the awake dynamic bodies, as the island pass would build them now
+   * (`world.stats.islands`). Changes no body: only this scratch. `awake` must be sorted.
+   */
+  count(awake: AwakeSet, contacts: ContactSet, joints: readonly { readonly a: Body; readonly b: Body | null }[]): number {
+    this.reserve(awake.count);
+    this.build(awake, contacts, joints, false);
+    let islands = 0;
+    for (let i = 0; i < awake.count; i += 1) if (awake.list[i].motion === MOTION_DYNAMIC && this.find(i) === i) islands += 1;
+    return islands;
+  }
+
+  private reserve(count: number): void {
+    this.parent = growInt32(this.parent, count);
+    this.minTimer = growFloat64(this.minTimer, count);
+    if (this.change.length < count) this.change = new Uint8Array(this.parent.length);
+  }
+
+  /**
+   * The union–find of the awake positions over the active touching contacts and the joints. With
+   * `carry`, a dynamic body on a moving kinematic one has its sleep timer reset (the island pass).
+   */
+  private build(
+    awake: AwakeSet,
+    contacts: ContactSet,
+    joints: readonly { readonly a: Body; readonly b: Body | null }[],
+    carry: boolean,
+  ): void {
+    const parent = this.parent;
+    for (let i = 0; i < awake.count; i += 1) parent[i] = i;
+    // Positions in the awake list: every dynamic body of an active touching contact is awake now.
+    const active = contacts.active;
+    for (let c = 0; c < contacts.activeCount; c += 1) {
+      const slot = active[c];
+      if ((contacts.flags[slot] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
+      this.link(awake, contacts.bodyA[slot] as Body, contacts.bodyB[slot] as Body, carry);
+    }
+    // A joint links its two bodies as a touching contact does.
+    for (let j = 0; j < joints.length; j += 1) {
+      const B = joints[j].b;
+      if (B !== null) this.link(awake, joints[j].a, B, carry);
+    }
+  }
+
   /** Links A and B (a touching contact or a joint) in the union–find of the awake bodies. */
-  private link(awake: AwakeSet, A: Body, B: Body): void {
+  private link(awake: AwakeSet, A: Body, B: Body, carry: boolean): void {
     const dynA = A.motion === MOTION_DYNAMIC;
     const dynB = B.motion === MOTION_DYNAMIC;
     if (dynA && dynB) {
       if (!awake.has(A) || !awake.has(B)) return; // both asleep: not this pass's island
       this.union(awake.positionOf(A), awake.positionOf(B));
+    } else if (!carry) {
+      return;
     } else if (dynA && isMoving(B)) {
       A.sleepTimer = 0; // carried by a moving kinematic body
     } else if (dynB && isMoving(A)) {

@@ -6,6 +6,8 @@
 //   stack9     9 boxes in one column          stands: top box drift < 0.01, |y − 8.5| < 0.02
 //   pyramid20  Box2D pyramid, 20 at the base   stands: every box within 0.05 of its start
 //   pile1000   1000 boxes dropped from a seeded 10×10×10 grid (time, and boxes below ground)
+//   pyramid100 Box2D v3's large pyramid, 100 at the base = 5,050 boxes (beside Rapier alone, one
+//              round; Box2D v3's published 3.9 ms/step, native and one thread, is printed beside it)
 //   PhysiN only: stack9 and a pile of 300 in 4D, a stack of 5 in n = 2..6.
 // PhysiN: default parameters (iterations 10) but allowSleep false. Rapier: default integration
 // parameters, timestep 1/60. cannon-es: GSSolver 10 iterations, SAPBroadphase, allowSleep false.
@@ -45,7 +47,9 @@ const wanted = (name) => ONLY === undefined || ONLY.includes(name);
 const ROUNDS_OVERRIDE = process.env.CONTACTS_ROUNDS === undefined ? undefined : Number(process.env.CONTACTS_ROUNDS);
 
 /** Wall-clock budget of one PhysiN run (ms); beyond it the run stops early (reported as capped). */
-const PHYSIN_BUDGET_MS = { small: 12_000, pile: 25_000 };
+const PHYSIN_BUDGET_MS = { small: 12_000, pile: 25_000, large: 60_000 };
+/** Box2D v3's published time for its large pyramid (ms/step, native, one thread): a reference, not a run. */
+const BOX2D_LARGE_PYRAMID_MS = 3.9;
 
 let RAPIER;
 let CANNON;
@@ -135,7 +139,12 @@ const engines = [
   {
     name: 'PhysiN',
     build: (layout) => buildPhysinScene(layout),
-    budget: (layout) => (layout.kind === 'pile' ? PHYSIN_BUDGET_MS.pile : PHYSIN_BUDGET_MS.small),
+    budget: (layout) =>
+      layout.positions.length > 1000
+        ? PHYSIN_BUDGET_MS.large
+        : layout.kind === 'pile'
+          ? PHYSIN_BUDGET_MS.pile
+          : PHYSIN_BUDGET_MS.small,
   },
   { name: 'Rapier', build: (layout) => buildRapierScene(RAPIER, layout), budget: () => Infinity },
   { name: 'cannon-es', build: (layout) => buildCannonScene(CANNON, layout), budget: () => Infinity },
@@ -152,8 +161,9 @@ const layouts3D = peerLayouts().filter((layout) => wanted(layout.name));
 for (const layout of layouts3D) {
   results[layout.name] = {};
   const laneOf = (engine) => lane(layout, engine.build, engine.budget(layout));
-  PEERS.forEach((peer, p) => {
-    const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], ROUNDS_OVERRIDE ?? ROUNDS[layout.kind] ?? 1);
+  PEERS.filter((peer) => layout.peers === undefined || layout.peers.includes(peer.name)).forEach((peer, p) => {
+    const rounds = ROUNDS_OVERRIDE ?? layout.rounds ?? ROUNDS[layout.kind] ?? 1;
+    const [mine, theirs] = runRounds([laneOf(PHYSIN), laneOf(peer)], rounds);
     results[layout.name][`PhysiN vs ${peer.name}`] = mine;
     if (p === 0) results[layout.name].PhysiN = mine;
     results[layout.name][peer.name] = theirs;
@@ -182,16 +192,18 @@ if (layouts3D.length > 0)
     '3D contact scenes: ratios of the median ms/step, each against the PhysiN run that shared its turns (below 1: PhysiN faster)',
     layouts3D.map((layout) => {
       const r = results[layout.name];
-      const capped = [r['PhysiN vs Rapier'], r['PhysiN vs cannon-es']].filter((x) => x.capped);
+      const capped = [r['PhysiN vs Rapier'], r['PhysiN vs cannon-es']].filter((x) => x?.capped);
+      const notes = capped.length > 0 ? [`PhysiN capped at ${capped[0].steps} steps`] : [];
+      if (layout.name === 'pyramid100') notes.push(`Box2D v3 (published, native, 1 thread): ${BOX2D_LARGE_PYRAMID_MS} ms`);
       return {
         scene: layout.name,
-        'PhysiN (turns with Rapier)': r['PhysiN vs Rapier'].median,
-        Rapier: r.Rapier.median,
-        'PhysiN/Rapier': ratio(r['PhysiN vs Rapier'].median, r.Rapier.median),
-        'PhysiN (turns with cannon-es)': r['PhysiN vs cannon-es'].median,
-        'cannon-es': r['cannon-es'].median,
-        'PhysiN/cannon-es': ratio(r['PhysiN vs cannon-es'].median, r['cannon-es'].median),
-        note: capped.length > 0 ? `PhysiN capped at ${capped[0].steps} steps` : '',
+        'PhysiN (turns with Rapier)': r['PhysiN vs Rapier']?.median ?? NaN,
+        Rapier: r.Rapier?.median ?? NaN,
+        'PhysiN/Rapier': ratio(r['PhysiN vs Rapier']?.median, r.Rapier?.median),
+        'PhysiN (turns with cannon-es)': r['PhysiN vs cannon-es']?.median ?? NaN,
+        'cannon-es': r['cannon-es']?.median ?? NaN,
+        'PhysiN/cannon-es': ratio(r['PhysiN vs cannon-es']?.median, r['cannon-es']?.median),
+        note: notes.join('; '),
       };
     }),
   );
@@ -249,7 +261,7 @@ const standing = (scene) => {
     met: yesNo(r.stands === true && !r.capped),
   });
 };
-const limits3D = { stack9: 2, pyramid20: 2, pile1000: 3 };
+const limits3D = { stack9: 2, pyramid20: 2, pile1000: 3, pyramid100: 1 };
 for (const layout of layouts3D) {
   const scene = layout.name;
   within(
@@ -261,6 +273,7 @@ for (const layout of layouts3D) {
   if (layout.kind !== 'pile') standing(scene);
 }
 for (const { name: scene } of layouts3D) {
+  if (results[scene]['PhysiN vs cannon-es'] === undefined) continue;
   const x = ratio(results[scene]['PhysiN vs cannon-es'].median, results[scene]['cannon-es'].median);
   targets.push({ target: `${scene}: faster than cannon-es`, measured: fmtRatio(x), limit: '< 1×', met: yesNo(x < 1) });
 }

@@ -102,9 +102,12 @@ export function pileLayout(count, n = 3, side = 10, seed = 1000 + n, name = `pil
   return { name, kind: 'pile', n, positions, yaws };
 }
 
-/** The 3D scenes every engine runs. */
+/**
+ * The 3D scenes the peers run. The large pyramid (Box2D v3's benchmark scene: 100 at the base,
+ * 5,050 boxes) runs once, beside Rapier alone (`peers`, `rounds`): cannon-es would take minutes.
+ */
 export function peerLayouts() {
-  return [stackLayout(9), pyramidLayout(20), pileLayout(1000, 3, 10)];
+  return [stackLayout(9), pyramidLayout(20), pileLayout(1000, 3, 10), { ...pyramidLayout(100), peers: ['Rapier'], rounds: 1 }];
 }
 
 /**

@@ -5,7 +5,7 @@ import { collideBoxSphere } from '../packages/engine/src/collision/box-sphere.js
 import { collide, collidePair } from '../packages/engine/src/collision/collide.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { CollidableShape } from '../packages/engine/src/collision/manifold.js';
-import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
 import { collideSphereHalfSpace } from '../packages/engine/src/collision/sphere-halfspace.js';
 import { sphereColliders } from '../packages/engine/src/collision/sphere-colliders.js';
 import { collideSphereSphere } from '../packages/engine/src/collision/sphere-sphere.js';

@@ -3,7 +3,7 @@ import { createManifold, createPose, maxManifoldPoints } from '../packages/engin
 import { collideMeshHalfSpace } from '../packages/engine/src/collision/mesh-halfspace.js';
 import { collideMeshSphere, MESH_INSIDE_ID } from '../packages/engine/src/collision/mesh-sphere.js';
 import type { CollisionHalfSpace, CollisionMesh } from '../packages/engine/src/collision/narrowphase-shapes.js';
-import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
 import { closestPointOnSimplex } from '../packages/engine/src/collision/simplex-closest.js';
 import { randomArray, seeded, uniform } from './support/random.js';
 import { randomPose } from './support/poses.js';

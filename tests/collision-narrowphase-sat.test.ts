@@ -3,13 +3,8 @@ import { boxBoxSat3 } from '../packages/engine/src/collision/box-box-sat3.js';
 import { boxBoxSatGeneral, satAxisCount, satAxisTable } from '../packages/engine/src/collision/box-box-sat.js';
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose } from '../packages/engine/src/collision/manifold.js';
-import {
-  createNarrowphaseScratch,
-  SAT_EDGE,
-  SAT_FACE_A,
-  SAT_FACE_B,
-  SAT_SEPARATED,
-} from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
+import { SAT_EDGE, SAT_FACE_A, SAT_FACE_B, SAT_SEPARATED } from '../packages/engine/src/collision/narrowphase-scratch.js';
 import { randomArray, seeded, uniform } from './support/random.js';
 import { randomPose } from './support/poses.js';
 import { box } from './support/shapes.js';

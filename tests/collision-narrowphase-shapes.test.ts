@@ -5,7 +5,7 @@ import { collidePair } from '../packages/engine/src/collision/collide.js';
 import { createManifold, createPose } from '../packages/engine/src/collision/manifold.js';
 import type { CollidableShape } from '../packages/engine/src/collision/manifold.js';
 import { meshColliders } from '../packages/engine/src/collision/mesh-colliders.js';
-import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
 import { sphereColliders } from '../packages/engine/src/collision/sphere-colliders.js';
 import { torusColliders } from '../packages/engine/src/collision/torus-colliders.js';
 import { ConvexMesh, HalfSpace, HyperBox, HyperSphere, HyperTorus } from '../packages/engine/src/shapes/index.js';

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Pose } from '../packages/engine/src/collision/manifold.js';
 import type { CollisionHalfSpace, CollisionTorus } from '../packages/engine/src/collision/narrowphase-shapes.js';
-import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
 import { collideTorusHalfSpace } from '../packages/engine/src/collision/torus-halfspace.js';
 import { collideTorusSphere } from '../packages/engine/src/collision/torus-sphere.js';
 import { randomArray, seeded, uniform } from './support/random.js';

@@ -12,7 +12,7 @@ import type { CollidableShape } from '../packages/engine/src/collision/index.js'
 import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Manifold, Pose } from '../packages/engine/src/collision/manifold.js';
-import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch.js';
+import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
 import { ManifoldCache } from '../packages/engine/src/contacts/manifold-cache.js';
 import type { ContactSet } from '../packages/engine/src/contacts/contact-set.js';
 import { randomRotation, turn } from './support/poses.js';

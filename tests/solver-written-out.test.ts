@@ -1,5 +1,5 @@
 /**
- * The written-out manifold solves for n = 3 and n = 4 (ContactSolver.solveManifold3 / 4) do the
+ * The written-out manifold solves for n = 3 and n = 4 (ContactSolver3 and ContactSolverND) do the
  * general loop's arithmetic in the same order, so a scene stepped with them and the same scene
  * stepped with the general loop must agree bit for bit — every position, rotor component,
  * velocity and angular momentum, after 240 steps of tumbling, sliding and stacking contact.

@@ -6,6 +6,8 @@
  */
 import { dims3 } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
+import { boxBoxSat3Kernel } from './collision/box-box-sat3.js';
+import { ContactSolver3 } from './solver/contact-solver-3d.js';
 import { WorldBase } from './world.js';
 import type { WorldOptions } from './world.js';
 
@@ -34,7 +36,11 @@ export class World extends WorldBase {
    *   non-finite) or bad `params` (unknown name, wrong type or range).
    */
   constructor(options: WorldOptions) {
-    super(options, tables3);
+    super(options, tables3, {
+      contactSolver: (D, gravity) => new ContactSolver3(D, gravity),
+      // n is 3 here: the world's tables are 3D.
+      boxBoxSat: (_n, a, poseA, b, poseB, scratch) => boxBoxSat3Kernel(a, poseA, b, poseB, scratch),
+    });
   }
 }
 

@@ -5,6 +5,8 @@
  * @module
  */
 import { dims } from '@physin/algebra';
+import { boxBoxSatKernel } from './collision/box-box-sat.js';
+import { ContactSolverND } from './solver/contact-solver-nd.js';
 import { WorldBase } from './world.js';
 import type { WorldOptions } from './world.js';
 
@@ -26,6 +28,9 @@ export class World extends WorldBase {
    *   (wrong length, non-finite) or `params` (unknown name, wrong type or range).
    */
   constructor(options: WorldOptions) {
-    super(options, dims);
+    super(options, dims, {
+      contactSolver: (D, gravity) => new ContactSolverND(D, gravity),
+      boxBoxSat: boxBoxSatKernel,
+    });
   }
 }

@@ -13,7 +13,8 @@ import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
 import { createPose } from './collision/manifold.js';
 import type { Pose } from './collision/manifold.js';
-import { createNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
+import { buildNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
+import type { BoxBoxSatKernel } from './collision/narrowphase-scratch.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './collision/broadphase-constants.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
 import type { QueryShape } from './collision/query-shapes.js';
@@ -24,7 +25,7 @@ import type { ProxyTables } from './contacts/contact-set.js';
 import type { CompoundShape } from './shapes/compound.js';
 import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
-import { ContactSolver } from './solver/contact-solver.js';
+import type { ContactSolver } from './solver/contact-solver.js';
 import { AwakeSet, Islands } from './solver/islands.js';
 import { SolverBodies } from './solver/solver-bodies.js';
 import { NonFiniteStateError } from './errors.js';
@@ -197,6 +198,19 @@ function throwBadTimeStep(dt: unknown): never {
 }
 
 /**
+ * The code chosen by dimension that an entry builds its worlds with, beside the tables. The root
+ * entry gives the code of every n; the 3D entry gives the 3D code alone (the 3D rows of the
+ * contact solver, the 3D box–box SAT), so a 3D app bundles no other dimension's kernels.
+ * @internal
+ */
+export interface WorldKernels {
+  /** Builds the contact solver for the world's tables; `gravity` is the world's own array. */
+  readonly contactSolver: (D: Dims, gravity: Float64Array) => ContactSolver;
+  /** The box–box separating-axis test for those tables. */
+  readonly boxBoxSat: BoxBoxSatKernel;
+}
+
+/**
  * A world of rigid bodies in n dimensions, whichever tables of dimensions it was built with: the
  * base of {@link World} (every n) and of the World of `@physin/engine/3d` (3D alone, a smaller
  * bundle). Use one of those to build a world; functions that take any world take a WorldBase.
@@ -319,8 +333,17 @@ export class WorldBase {
    *   entry does not build), `gravity` (wrong length, non-finite) or `params` (unknown name,
    *   wrong type or range).
    */
-  protected constructor(options: WorldOptions, tables: (n: number) => Dims) {
+  protected constructor(options: WorldOptions, tables: (n: number) => Dims);
+  /**
+   * The entries' form: with the code chosen by dimension (see {@link WorldKernels}), which the
+   * world does not import, so that each entry bundles its own alone.
+   * @internal
+   */
+  protected constructor(options: WorldOptions, tables: (n: number) => Dims, kernels: WorldKernels);
+  protected constructor(options: WorldOptions, tables: (n: number) => Dims, kernels?: WorldKernels) {
     const fn = 'new World';
+    // Only the World of an entry can build a world: it has the kernels.
+    if (kernels === undefined) throw new TypeError(`${fn}: build the World of @physin/engine or @physin/engine/3d`);
     if (options === null || typeof options !== 'object') {
       throw new TypeError(`${fn}: argument 'options' must be an object { dimensions, gravity?, params? }`);
     }
@@ -351,11 +374,13 @@ export class WorldBase {
     this.constants = createStepConstants();
     const unit = params.lengthUnit;
     this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
-    this.narrowScratch = createNarrowphaseScratch(D.n, { featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit });
+    this.narrowScratch = buildNarrowphaseScratch(kernels.boxBoxSat, D.n, {
+      featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit,
+    });
     this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
     this.contacts = new ContactSet(D.n, this.proxyTables);
     this.solverBodies = new SolverBodies(D);
-    this.solver = new ContactSolver(D, this.gravityValue);
+    this.solver = kernels.contactSolver(D, this.gravityValue);
     this.events = new ContactEvents(D.n);
     this.collisionEvent = {
       type: 'begin',

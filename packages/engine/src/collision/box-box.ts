@@ -5,7 +5,6 @@
  *
  * @module
  */
-import { boxBoxSatKernel } from './box-box-sat.js';
 import { clipBoxFacesKernel } from './box-box-clip.js';
 import type { Manifold, Pose } from './manifold.js';
 import { clearCandidates, reduceCandidates } from './manifold-reduce.js';
@@ -58,7 +57,7 @@ export function collideBoxBoxKernel(
   poseB: Pose,
   scratch: NarrowphaseScratch,
 ): boolean {
-  if (!boxBoxSatKernel(n, a, poseA, b, poseB, scratch)) {
+  if (!scratch.boxBoxSat(n, a, poseA, b, poseB, scratch)) {
     out.count = 0;
     return false;
   }

@@ -36,7 +36,8 @@ import type { CollidableShape, Manifold, Pose } from './manifold.js';
 import { checkNarrowphaseDimension } from './manifold.js';
 import { candidateSlot, clearCandidates, reduceCandidates } from './manifold-reduce.js';
 import type { CollisionBox, CollisionMesh } from './narrowphase-shapes.js';
-import { createNarrowphaseScratch, NARROWPHASE_MARGIN, SCALAR_CANDIDATE } from './narrowphase-scratch.js';
+import { NARROWPHASE_MARGIN, SCALAR_CANDIDATE } from './narrowphase-scratch.js';
+import { createNarrowphaseScratch } from './narrowphase-scratch-nd.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { checkCollisionShape, checkNarrowphaseOutput, checkPose } from './narrowphase-checks.js';
 import {

@@ -6,7 +6,8 @@
  * @module
  */
 import { checkNarrowphaseDimension, createManifold } from './manifold.js';
-import type { Manifold } from './manifold.js';
+import type { Manifold, Pose } from './manifold.js';
+import type { CollisionBox } from './narrowphase-shapes.js';
 import { trainShapeAccessors } from './shape-kind.js';
 import type { PolytopeScratch } from './convex-polytope.js';
 
@@ -95,7 +96,20 @@ export interface SatResult {
   readonly localNormal: Float64Array;
 }
 
-/** Working memory and tolerances of the narrowphase for one n. See {@link createNarrowphaseScratch}. */
+/**
+ * A box–box separating-axis test with the margin read from `scratch.scalars[NARROWPHASE_MARGIN]`
+ * (box-box-sat.ts has the contract): the general one for any n, or the 3D one alone.
+ */
+export type BoxBoxSatKernel = (
+  n: number,
+  a: CollisionBox,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+) => boolean;
+
+/** Working memory and tolerances of the narrowphase for one n. See {@link buildNarrowphaseScratch}. */
 export interface NarrowphaseScratch {
   readonly n: number;
   readonly axisTolerance: number;
@@ -106,6 +120,11 @@ export interface NarrowphaseScratch {
   candidates: Manifold;
   /** Per-candidate distances of the reduction (as long as `candidates.capacity`). */
   reduceDistance: Float64Array;
+  /**
+   * The box–box SAT that box–box contacts run. It comes with the scratch, not by import, so a 3D
+   * world (the 3D entry's scratch has the 3D test alone) does not bundle the general one.
+   */
+  readonly boxBoxSat: BoxBoxSatKernel;
   /** Result of the last box–box SAT. */
   readonly sat: SatResult;
   /**
@@ -180,15 +199,21 @@ export function clipCandidateBound(n: number): number {
 }
 
 /**
- * Builds the narrowphase scratch for n dimensions. Allocates (a few kB; 1024·n numbers of
- * candidates at n >= 5); call once per world and dimension.
+ * Builds the narrowphase scratch for n dimensions with the given box–box SAT (the general one:
+ * `createNarrowphaseScratch` of narrowphase-scratch-nd.ts). Allocates (a few kB; 1024·n numbers
+ * of candidates at n >= 5); call once per world and dimension.
  *
+ * @param boxBoxSat - the box–box SAT for n (see {@link NarrowphaseScratch.boxBoxSat}).
  * @param n - count of dimensions (2..8).
  * @param options - tolerances; see {@link NarrowphaseOptions}.
  * @throws TypeError for a non-integer n or a non-number option; RangeError for n out of range,
  *   a negative or non-finite tolerance, or a ring point count outside 3..32.
  */
-export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions = {}): NarrowphaseScratch {
+export function buildNarrowphaseScratch(
+  boxBoxSat: BoxBoxSatKernel,
+  n: number,
+  options: NarrowphaseOptions = {},
+): NarrowphaseScratch {
   checkNarrowphaseDimension(n, 'n');
   if (typeof options !== 'object' || options === null) {
     throw new TypeError(
@@ -221,6 +246,7 @@ export function createNarrowphaseScratch(n: number, options: NarrowphaseOptions 
     featureTieTolerance,
     clipTolerance,
     torusRingPoints: ring,
+    boxBoxSat,
     candidates: createManifold(n, candidateCapacity),
     reduceDistance: new Float64Array(candidateCapacity),
     sat: {

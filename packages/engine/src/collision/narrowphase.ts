@@ -11,9 +11,10 @@
 export type { CollidableShape, ColliderTable, Manifold, PairCollider, Pose } from './manifold.js';
 export { createManifold, createPose, maxManifoldPoints, NARROWPHASE_MAX_DIMENSIONS } from './manifold.js';
 export type { CollisionBox, CollisionHalfSpace, CollisionMesh, CollisionSphere, CollisionTorus } from './narrowphase-shapes.js';
-export type { NarrowphaseOptions, NarrowphaseScratch, SatResult } from './narrowphase-scratch.js';
+export type { BoxBoxSatKernel, NarrowphaseOptions, NarrowphaseScratch, SatResult } from './narrowphase-scratch.js';
+export { createNarrowphaseScratch } from './narrowphase-scratch-nd.js';
 export {
-  createNarrowphaseScratch,
+  buildNarrowphaseScratch,
   DEFAULT_AXIS_TOLERANCE,
   DEFAULT_CLIP_TOLERANCE,
   DEFAULT_FEATURE_TIE_TOLERANCE,

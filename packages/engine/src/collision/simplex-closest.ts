@@ -15,7 +15,7 @@
  */
 import { checkFiniteArray, checkNarrowphaseOutput } from './narrowphase-checks.js';
 import { checkNarrowphaseDimension } from './manifold.js';
-import { createNarrowphaseScratch } from './narrowphase-scratch.js';
+import { createNarrowphaseScratch } from './narrowphase-scratch-nd.js';
 import type { NarrowphaseScratch } from './narrowphase-scratch.js';
 import { luFactor, luSolve } from './small-linear.js';
 

@@ -46,7 +46,7 @@ const SOLVE_LAMBDA = 4;
 /** `solverTolerance` (m/s): a pass or inner sweep that changes no row's velocity more ends early. */
 const SOLVE_TOLERANCE = 5;
 /** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
-const SOLVE_CHANGE = 6;
+export const SOLVE_CHANGE = 6;
 /** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
 const SHOCK_INNER_SWEEPS = 3;
 /**
@@ -68,26 +68,18 @@ const SHOCK_LEFT_OUT = 0.8;
 const RESTITUTION_SWEEPS = 32;
 
 /** Sequential-impulse solver of the contacts of one world. */
-export class ContactSolver {
-  private readonly D: Dims;
-  private readonly n: number;
-  private readonly k: number;
+export abstract class ContactSolver {
+  protected readonly D: Dims;
+  protected readonly n: number;
+  protected readonly k: number;
   /** Tangent rows of a patch: n − 1. */
-  private readonly m: number;
+  protected readonly m: number;
   /** Twist rows of a patch: the planes of the tangent space, (n−1)(n−2)/2. */
-  private readonly q: number;
+  protected readonly q: number;
   /** Rows of a patch: m + q. */
-  private readonly PR: number;
+  protected readonly PR: number;
   /** Numbers per row: dir (n), J_A, J_B, I_A⁻¹J_A, I_B⁻¹J_B (k each), mass, K_A, K_B. */
-  private readonly RS: number;
-
-  /**
-   * Whether n = 3 and n = 4 use the written-out copies of the row set-up in `prepare` and of the
-   * manifold solve (default true).
-   * They are bit-identical to the general loop; tests switch them off to show it.
-   * @internal
-   */
-  writtenOut = true;
+  protected readonly RS: number;
 
   /** Normal passes the last `solve` ran (at most `iterations`; see `Params.solverTolerance`). @internal */
   passesRun = 0;
@@ -95,22 +87,22 @@ export class ContactSolver {
   /** Manifolds of this sub-step. */
   private mfCount = 0;
   private mfContact = new Int32Array(16);
-  private mfA = new Int32Array(16);
-  private mfB = new Int32Array(16);
-  private mfFirst = new Int32Array(16);
-  private mfPoints = new Int32Array(16);
-  private mfFriction = new Float64Array(16);
+  protected mfA = new Int32Array(16);
+  protected mfB = new Int32Array(16);
+  protected mfFirst = new Int32Array(16);
+  protected mfPoints = new Int32Array(16);
+  protected mfFriction = new Float64Array(16);
   private mfRestitution = new Float64Array(16);
   /** Twist radius R of each patch: the mean distance of its points from their centroid. */
-  private mfRadius = new Float64Array(16);
+  protected mfRadius = new Float64Array(16);
   /** Manifold order of the shock passes (lowest layer first). */
   private shockOrder = new Int32Array(16);
   private layerCount = new Int32Array(16);
   /** The friction patch rows, PR per manifold. */
-  private patchRows: Float64Array;
+  protected patchRows: Float64Array;
   /** Accumulated tangent impulses (m per manifold) and twist impulses (q per manifold). */
-  private lambdaP: Float64Array;
-  private lambdaW: Float64Array;
+  protected lambdaP: Float64Array;
+  protected lambdaW: Float64Array;
   /**
    * The impulses the shock passes of this sub-step added, which `store` leaves out of the warm
    * start (see {@link ContactSolver.shockPropagate}).
@@ -124,8 +116,8 @@ export class ContactSolver {
   /** Points of this sub-step. */
   private cpCount = 0;
   /** The normal rows, one per point. */
-  private rows: Float64Array;
-  private target = new Float64Array(16);
+  protected rows: Float64Array;
+  protected target = new Float64Array(16);
   private vn0 = new Float64Array(16);
   /**
    * Per point: the approach a speculative stop records for the next sub-step's bounce (see
@@ -139,14 +131,14 @@ export class ContactSolver {
    * apart is stopped at the surface first and bounces from there one sub-step later).
    */
   private bounceGap = new Float64Array(16);
-  private lambdaN = new Float64Array(16);
-  private maxLambda = new Float64Array(16);
+  protected lambdaN = new Float64Array(16);
+  protected maxLambda = new Float64Array(16);
 
-  private readonly constants = new Float64Array(7);
+  protected readonly constants = new Float64Array(7);
   private readonly tangents: Float64Array;
-  private readonly tmp: Float64Array;
-  private readonly rA: Float64Array;
-  private readonly rB: Float64Array;
+  protected readonly tmp: Float64Array;
+  protected readonly rA: Float64Array;
+  protected readonly rB: Float64Array;
   private readonly centre: Float64Array;
 
   constructor(D: Dims, gravity: Float64Array) {
@@ -239,8 +231,6 @@ export class ContactSolver {
     const rA = this.rA;
     const rB = this.rB;
     const centre = this.centre;
-    // The written-out rows of n = 3 and n = 4 (see writtenOut).
-    const fast = this.writtenOut ? n : 0;
     this.mfCount = 0;
     this.cpCount = 0;
     for (let i = 0; i < contacts.count; i += 1) {
@@ -316,7 +306,7 @@ export class ContactSolver {
         }
         const base = cp * RS;
         for (let d = 0; d < n; d += 1) rows[base + d] = N[d];
-        this.buildRow(rows, base, a, b, sb, fast);
+        this.buildRow(rows, base, a, b, sb);
         // Normal velocity before the solve: only restitution reads it (from vn0 here, and from
         // the approach speed it leaves for the next sub-step), so a pair that cannot bounce skips it.
         if (bouncy) {
@@ -381,7 +371,7 @@ export class ContactSolver {
           patch[base + d] = tangents[t * n + d];
           s2 += contacts.patchTangent[ti + d] * tangents[t * n + d];
         }
-        this.buildRow(patch, base, a, b, sb, fast);
+        this.buildRow(patch, base, a, b, sb);
         this.lambdaP[mf * m + t] = warm ? s2 : 0;
       }
       const wi = slot * k;
@@ -402,251 +392,11 @@ export class ContactSolver {
 
   /**
    * Fills row `base` of `rows` (its direction d already written) for the arms this.rA, this.rB
-   * between slots a and b: J = r ∧ d, I⁻¹J, the effective mass and the two inverse masses.
+   * between slots a and b: J = r ∧ d, I⁻¹J, the effective mass and the two inverse masses. Each
+   * dimension's solver has its own (see contact-solver-3d.ts and contact-solver-nd.ts), so a 3D
+   * app carries the 3D rows alone.
    */
-  private buildRow(rows: Float64Array, base: number, a: number, b: number, sb: SolverBodies, fast: number): void {
-    const { n, k } = this;
-    const planeI = this.D.planeI;
-    const planeJ = this.D.planeJ;
-    const rA = this.rA;
-    const rB = this.rB;
-    const imA = sb.invMass[a];
-    const imB = sb.invMass[b];
-    const IA = a * k * k;
-    const IB = b * k * k;
-    const IW = sb.invInertia;
-    // s ≥ 0 when the body's I⁻¹ is s·identity (then I⁻¹J = s·J), else −1 (see SolverBodies).
-    const isoA = sb.isoInvInertia[a];
-    const isoB = sb.isoInvInertia[b];
-    if (fast === 3) {
-      // n = 3 written out (the same sums in the same order as the general loop below; each
-      // sum starts at `0 +` as the loop's does, so a −0 product still sums to +0).
-      const d0 = rows[base];
-      const d1 = rows[base + 1];
-      const d2 = rows[base + 2];
-      const ja0 = rA[0] * d1 - rA[1] * d0;
-      const jb0 = rB[0] * d1 - rB[1] * d0;
-      rows[base + 3] = ja0;
-      rows[base + 6] = jb0;
-      const ja1 = rA[0] * d2 - rA[2] * d0;
-      const jb1 = rB[0] * d2 - rB[2] * d0;
-      rows[base + 4] = ja1;
-      rows[base + 7] = jb1;
-      const ja2 = rA[1] * d2 - rA[2] * d1;
-      const jb2 = rB[1] * d2 - rB[2] * d1;
-      rows[base + 5] = ja2;
-      rows[base + 8] = jb2;
-      let KA = imA;
-      let KB = imB;
-      const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
-      const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
-      rows[base + 9] = sa0;
-      rows[base + 12] = sb0;
-      KA += sa0 * ja0;
-      KB += sb0 * jb0;
-      const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
-      const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
-      rows[base + 10] = sa1;
-      rows[base + 13] = sb1;
-      KA += sa1 * ja1;
-      KB += sb1 * jb1;
-      const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
-      const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
-      rows[base + 11] = sa2;
-      rows[base + 14] = sb2;
-      KA += sa2 * ja2;
-      KB += sb2 * jb2;
-      const K = KA + KB;
-      rows[base + 15] = K > 0 ? 1 / K : 0;
-      rows[base + 16] = KA;
-      rows[base + 17] = KB;
-    } else if (fast === 4) {
-      // n = 4 written out (the same sums in the same order as the general loop below).
-      const d0 = rows[base];
-      const d1 = rows[base + 1];
-      const d2 = rows[base + 2];
-      const d3 = rows[base + 3];
-      const ja0 = rA[0] * d1 - rA[1] * d0;
-      const jb0 = rB[0] * d1 - rB[1] * d0;
-      rows[base + 4] = ja0;
-      rows[base + 10] = jb0;
-      const ja1 = rA[0] * d2 - rA[2] * d0;
-      const jb1 = rB[0] * d2 - rB[2] * d0;
-      rows[base + 5] = ja1;
-      rows[base + 11] = jb1;
-      const ja2 = rA[0] * d3 - rA[3] * d0;
-      const jb2 = rB[0] * d3 - rB[3] * d0;
-      rows[base + 6] = ja2;
-      rows[base + 12] = jb2;
-      const ja3 = rA[1] * d2 - rA[2] * d1;
-      const jb3 = rB[1] * d2 - rB[2] * d1;
-      rows[base + 7] = ja3;
-      rows[base + 13] = jb3;
-      const ja4 = rA[1] * d3 - rA[3] * d1;
-      const jb4 = rB[1] * d3 - rB[3] * d1;
-      rows[base + 8] = ja4;
-      rows[base + 14] = jb4;
-      const ja5 = rA[2] * d3 - rA[3] * d2;
-      const jb5 = rB[2] * d3 - rB[3] * d2;
-      rows[base + 9] = ja5;
-      rows[base + 15] = jb5;
-      let KA = imA;
-      let KB = imB;
-      const sa0 =
-        isoA >= 0
-          ? isoA * ja0
-          : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2 + IW[IA + 3] * ja3 + IW[IA + 4] * ja4 + IW[IA + 5] * ja5;
-      const sb0 =
-        isoB >= 0
-          ? isoB * jb0
-          : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2 + IW[IB + 3] * jb3 + IW[IB + 4] * jb4 + IW[IB + 5] * jb5;
-      rows[base + 16] = sa0;
-      rows[base + 22] = sb0;
-      KA += sa0 * ja0;
-      KB += sb0 * jb0;
-      const sa1 =
-        isoA >= 0
-          ? isoA * ja1
-          : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2 + IW[IA + 9] * ja3 + IW[IA + 10] * ja4 + IW[IA + 11] * ja5;
-      const sb1 =
-        isoB >= 0
-          ? isoB * jb1
-          : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2 + IW[IB + 9] * jb3 + IW[IB + 10] * jb4 + IW[IB + 11] * jb5;
-      rows[base + 17] = sa1;
-      rows[base + 23] = sb1;
-      KA += sa1 * ja1;
-      KB += sb1 * jb1;
-      const sa2 =
-        isoA >= 0
-          ? isoA * ja2
-          : 0 +
-            IW[IA + 12] * ja0 +
-            IW[IA + 13] * ja1 +
-            IW[IA + 14] * ja2 +
-            IW[IA + 15] * ja3 +
-            IW[IA + 16] * ja4 +
-            IW[IA + 17] * ja5;
-      const sb2 =
-        isoB >= 0
-          ? isoB * jb2
-          : 0 +
-            IW[IB + 12] * jb0 +
-            IW[IB + 13] * jb1 +
-            IW[IB + 14] * jb2 +
-            IW[IB + 15] * jb3 +
-            IW[IB + 16] * jb4 +
-            IW[IB + 17] * jb5;
-      rows[base + 18] = sa2;
-      rows[base + 24] = sb2;
-      KA += sa2 * ja2;
-      KB += sb2 * jb2;
-      const sa3 =
-        isoA >= 0
-          ? isoA * ja3
-          : 0 +
-            IW[IA + 18] * ja0 +
-            IW[IA + 19] * ja1 +
-            IW[IA + 20] * ja2 +
-            IW[IA + 21] * ja3 +
-            IW[IA + 22] * ja4 +
-            IW[IA + 23] * ja5;
-      const sb3 =
-        isoB >= 0
-          ? isoB * jb3
-          : 0 +
-            IW[IB + 18] * jb0 +
-            IW[IB + 19] * jb1 +
-            IW[IB + 20] * jb2 +
-            IW[IB + 21] * jb3 +
-            IW[IB + 22] * jb4 +
-            IW[IB + 23] * jb5;
-      rows[base + 19] = sa3;
-      rows[base + 25] = sb3;
-      KA += sa3 * ja3;
-      KB += sb3 * jb3;
-      const sa4 =
-        isoA >= 0
-          ? isoA * ja4
-          : 0 +
-            IW[IA + 24] * ja0 +
-            IW[IA + 25] * ja1 +
-            IW[IA + 26] * ja2 +
-            IW[IA + 27] * ja3 +
-            IW[IA + 28] * ja4 +
-            IW[IA + 29] * ja5;
-      const sb4 =
-        isoB >= 0
-          ? isoB * jb4
-          : 0 +
-            IW[IB + 24] * jb0 +
-            IW[IB + 25] * jb1 +
-            IW[IB + 26] * jb2 +
-            IW[IB + 27] * jb3 +
-            IW[IB + 28] * jb4 +
-            IW[IB + 29] * jb5;
-      rows[base + 20] = sa4;
-      rows[base + 26] = sb4;
-      KA += sa4 * ja4;
-      KB += sb4 * jb4;
-      const sa5 =
-        isoA >= 0
-          ? isoA * ja5
-          : 0 +
-            IW[IA + 30] * ja0 +
-            IW[IA + 31] * ja1 +
-            IW[IA + 32] * ja2 +
-            IW[IA + 33] * ja3 +
-            IW[IA + 34] * ja4 +
-            IW[IA + 35] * ja5;
-      const sb5 =
-        isoB >= 0
-          ? isoB * jb5
-          : 0 +
-            IW[IB + 30] * jb0 +
-            IW[IB + 31] * jb1 +
-            IW[IB + 32] * jb2 +
-            IW[IB + 33] * jb3 +
-            IW[IB + 34] * jb4 +
-            IW[IB + 35] * jb5;
-      rows[base + 21] = sa5;
-      rows[base + 27] = sb5;
-      KA += sa5 * ja5;
-      KB += sb5 * jb5;
-      const K = KA + KB;
-      rows[base + 28] = K > 0 ? 1 / K : 0;
-      rows[base + 29] = KA;
-      rows[base + 30] = KB;
-    } else {
-      // J = r ∧ dir
-      for (let pl = 0; pl < k; pl += 1) {
-        const pi = planeI[pl];
-        const pj = planeJ[pl];
-        const di = rows[base + pi];
-        const dj = rows[base + pj];
-        rows[base + n + pl] = rA[pi] * dj - rA[pj] * di;
-        rows[base + n + k + pl] = rB[pi] * dj - rB[pj] * di;
-      }
-      // I⁻¹J and K = 1/m + J·I⁻¹J per body
-      let KA = imA;
-      let KB = imB;
-      for (let row = 0; row < k; row += 1) {
-        let sa = 0;
-        let sbv = 0;
-        if (isoA >= 0) sa = isoA * rows[base + n + row];
-        else for (let col = 0; col < k; col += 1) sa += IW[IA + row * k + col] * rows[base + n + col];
-        if (isoB >= 0) sbv = isoB * rows[base + n + k + row];
-        else for (let col = 0; col < k; col += 1) sbv += IW[IB + row * k + col] * rows[base + n + k + col];
-        rows[base + n + 2 * k + row] = sa;
-        rows[base + n + 3 * k + row] = sbv;
-        KA += sa * rows[base + n + row];
-        KB += sbv * rows[base + n + k + row];
-      }
-      const K = KA + KB;
-      rows[base + n + 4 * k] = K > 0 ? 1 / K : 0;
-      rows[base + n + 4 * k + 1] = KA;
-      rows[base + n + 4 * k + 2] = KB;
-    }
-  }
+  protected abstract buildRow(rows: Float64Array, base: number, a: number, b: number, sb: SolverBodies): void;
 
   /**
    * Fills the twist row `base` of `rows` for tangents t1 < t2: no linear part, J_A = J_B the unit
@@ -810,9 +560,7 @@ export class ContactSolver {
       const mf = shock ? this.shockOrder[o] : o;
       for (let sweep = 0; sweep < inner; sweep += 1) {
         c[SOLVE_CHANGE] = 0;
-        if (this.writtenOut && this.n === 3) this.solveManifold3(sb, mf, shock);
-        else if (this.writtenOut && this.n === 4) this.solveManifold4(sb, mf, shock);
-        else this.solveManifold(sb, mf, shock);
+        this.solveManifold(sb, mf, shock);
         if (c[SOLVE_CHANGE] <= tolerance) break;
         converged = false;
       }
@@ -821,724 +569,10 @@ export class ContactSolver {
   }
 
   /**
-   * The friction patch, then the normals, of manifold `mf` (see {@link ContactSolver.pass}). The
-   * row velocity and the impulse are written out inline: this is the innermost loop of the engine.
+   * The friction patch, then the normals, of manifold `mf` (see {@link ContactSolver.pass}), the
+   * innermost loop of the engine. Each dimension's solver has its own, as for `buildRow`.
    */
-  private solveManifold(sb: SolverBodies, mf: number, shock: boolean): void {
-    const { n, k, m, q, PR, RS } = this;
-    const rows = this.rows;
-    const patch = this.patchRows;
-    const V = sb.v;
-    const W = sb.w;
-    const a = this.mfA[mf];
-    const b = this.mfB[mf];
-    let fa = 1;
-    let fb = 1;
-    if (shock) {
-      const da = sb.depth[a];
-      const db = sb.depth[b];
-      if (da < db) fa = 0;
-      else if (db < da) fb = 0;
-    }
-    const ima = fa * sb.invMass[a];
-    const imb = fb * sb.invMass[b];
-    const va = a * n;
-    const vb = b * n;
-    const wa = a * k;
-    const wb = b * k;
-    const jA = n;
-    const jB = n + k;
-    const iA = n + 2 * k;
-    const iB = n + 3 * k;
-    const mu = this.mfFriction[mf];
-    const first = this.mfFirst[mf];
-    const last = first + this.mfPoints[mf];
-    const lambdaN = this.lambdaN;
-    const tmp = this.tmp;
-    let change = 0;
-    if (mu > 0) {
-      let sumN = 0;
-      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
-      const maxT = mu * sumN;
-      const radius = this.mfRadius[mf];
-      // block 0: the m tangent rows (limit μΣλ_n); block 1: the q twist rows (limit μΣλ_n·R)
-      for (let blk = 0; blk < 2; blk += 1) {
-        const twist = blk === 1;
-        const count = twist ? (radius > 0 ? q : 0) : m;
-        const lam = twist ? this.lambdaW : this.lambdaP;
-        const lo = twist ? mf * q : mf * m;
-        const rb0 = mf * PR * RS + (twist ? m * RS : 0);
-        const limit = twist ? maxT * radius : maxT;
-        let norm2 = 0;
-        for (let t = 0; t < count; t += 1) {
-          const rb = rb0 + t * RS;
-          let vt = 0;
-          if (!twist) for (let d = 0; d < n; d += 1) vt += patch[rb + d] * (V[vb + d] - V[va + d]);
-          for (let pl = 0; pl < k; pl += 1) vt += patch[rb + jB + pl] * W[wb + pl] - patch[rb + jA + pl] * W[wa + pl];
-          const K = fa * patch[rb + RS - 2] + fb * patch[rb + RS - 1];
-          const nl = K > 0 ? lam[lo + t] - vt / K : lam[lo + t];
-          tmp[t] = nl;
-          norm2 += nl * nl;
-        }
-        const scale = norm2 > limit * limit ? limit / Math.sqrt(norm2) : 1;
-        for (let t = 0; t < count; t += 1) {
-          const nl = tmp[t] * scale;
-          const dl = nl - lam[lo + t];
-          lam[lo + t] = nl;
-          if (dl === 0) continue;
-          const rb = rb0 + t * RS;
-          const moved = Math.abs(dl) * (fa * patch[rb + RS - 2] + fb * patch[rb + RS - 1]);
-          if (moved > change) change = moved;
-          if (!twist) {
-            const la = ima * dl;
-            const lb = imb * dl;
-            for (let d = 0; d < n; d += 1) {
-              const dir = patch[rb + d];
-              V[va + d] -= la * dir;
-              V[vb + d] += lb * dir;
-            }
-          }
-          const ga = fa * dl;
-          const gb = fb * dl;
-          for (let pl = 0; pl < k; pl += 1) {
-            W[wa + pl] -= ga * patch[rb + iA + pl];
-            W[wb + pl] += gb * patch[rb + iB + pl];
-          }
-        }
-      }
-    }
-    for (let cp = first; cp < last; cp += 1) {
-      const rb = cp * RS;
-      const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
-      if (!(K > 0)) continue;
-      let vn = 0;
-      for (let d = 0; d < n; d += 1) vn += rows[rb + d] * (V[vb + d] - V[va + d]);
-      for (let pl = 0; pl < k; pl += 1) vn += rows[rb + jB + pl] * W[wb + pl] - rows[rb + jA + pl] * W[wa + pl];
-      const old = lambdaN[cp];
-      const nl = Math.max(0, old + (this.target[cp] - vn) / K);
-      lambdaN[cp] = nl;
-      if (nl > this.maxLambda[cp]) this.maxLambda[cp] = nl;
-      const dl = nl - old;
-      if (dl === 0) continue;
-      const moved = Math.abs(dl) * K;
-      if (moved > change) change = moved;
-      const la = ima * dl;
-      const lb = imb * dl;
-      for (let d = 0; d < n; d += 1) {
-        const dir = rows[rb + d];
-        V[va + d] -= la * dir;
-        V[vb + d] += lb * dir;
-      }
-      const ga = fa * dl;
-      const gb = fb * dl;
-      for (let pl = 0; pl < k; pl += 1) {
-        W[wa + pl] -= ga * rows[rb + iA + pl];
-        W[wb + pl] += gb * rows[rb + iB + pl];
-      }
-    }
-    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
-  }
-
-  /**
-   * {@link ContactSolver.solveManifold} for n = 3, written out (k = 3, 2 tangent and 1 twist
-   * row, row stride 18): the same arithmetic in the same order, so results are bit-identical
-   * to the general loop; the velocities of the two bodies stay in locals for the whole manifold.
-   * (Generated from the general loop; keep the two in step.)
-   */
-  private solveManifold3(sb: SolverBodies, mf: number, shock: boolean): void {
-    const rows = this.rows;
-    const patch = this.patchRows;
-    const V = sb.v;
-    const W = sb.w;
-    const a = this.mfA[mf];
-    const b = this.mfB[mf];
-    let fa = 1;
-    let fb = 1;
-    if (shock) {
-      const da = sb.depth[a];
-      const db = sb.depth[b];
-      if (da < db) fa = 0;
-      else if (db < da) fb = 0;
-    }
-    const ima = fa * sb.invMass[a];
-    const imb = fb * sb.invMass[b];
-    const va = a * 3;
-    const vb = b * 3;
-    const wa = a * 3;
-    const wb = b * 3;
-    let vax = V[va],
-      vay = V[va + 1],
-      vaz = V[va + 2];
-    let vbx = V[vb],
-      vby = V[vb + 1],
-      vbz = V[vb + 2];
-    let wa0 = W[wa],
-      wa1 = W[wa + 1],
-      wa2 = W[wa + 2];
-    let wb0 = W[wb],
-      wb1 = W[wb + 1],
-      wb2 = W[wb + 2];
-    const mu = this.mfFriction[mf];
-    const first = this.mfFirst[mf];
-    const last = first + this.mfPoints[mf];
-    const lambdaN = this.lambdaN;
-    const lambdaP = this.lambdaP;
-    const lambdaW = this.lambdaW;
-    const target = this.target;
-    const maxLambda = this.maxLambda;
-    let change = 0;
-    if (mu > 0) {
-      let sumN = 0;
-      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
-      const maxT = mu * sumN;
-      const radius = this.mfRadius[mf];
-      const pb = mf * 54;
-      const t1 = pb;
-      const t2 = pb + 18;
-      {
-        const v1 =
-          patch[t1] * (vbx - vax) +
-          patch[t1 + 1] * (vby - vay) +
-          patch[t1 + 2] * (vbz - vaz) +
-          (patch[t1 + 6] * wb0 - patch[t1 + 3] * wa0) +
-          (patch[t1 + 7] * wb1 - patch[t1 + 4] * wa1) +
-          (patch[t1 + 8] * wb2 - patch[t1 + 5] * wa2);
-        const v2 =
-          patch[t2] * (vbx - vax) +
-          patch[t2 + 1] * (vby - vay) +
-          patch[t2 + 2] * (vbz - vaz) +
-          (patch[t2 + 6] * wb0 - patch[t2 + 3] * wa0) +
-          (patch[t2 + 7] * wb1 - patch[t2 + 4] * wa1) +
-          (patch[t2 + 8] * wb2 - patch[t2 + 5] * wa2);
-        const K1 = fa * patch[t1 + 16] + fb * patch[t1 + 17];
-        const K2 = fa * patch[t2 + 16] + fb * patch[t2 + 17];
-        const o1 = lambdaP[mf * 2];
-        const o2 = lambdaP[mf * 2 + 1];
-        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
-        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
-        const norm2 = n1 * n1 + n2 * n2;
-        if (norm2 > maxT * maxT) {
-          const scale = maxT / Math.sqrt(norm2);
-          n1 *= scale;
-          n2 *= scale;
-        }
-        lambdaP[mf * 2] = n1;
-        lambdaP[mf * 2 + 1] = n2;
-        const d1 = n1 - o1;
-        const d2 = n2 - o2;
-        // Applied one row after the other, as the general loop does.
-        if (d1 !== 0) {
-          const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
-          const la = ima * d1;
-          const lb = imb * d1;
-          vax -= la * patch[t1];
-          vbx += lb * patch[t1];
-          vay -= la * patch[t1 + 1];
-          vby += lb * patch[t1 + 1];
-          vaz -= la * patch[t1 + 2];
-          vbz += lb * patch[t1 + 2];
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[t1 + 9];
-          wb0 += gb * patch[t1 + 12];
-          wa1 -= ga * patch[t1 + 10];
-          wb1 += gb * patch[t1 + 13];
-          wa2 -= ga * patch[t1 + 11];
-          wb2 += gb * patch[t1 + 14];
-        }
-        if (d2 !== 0) {
-          const moved = Math.abs(d2) * K2;
-          if (moved > change) change = moved;
-          const la = ima * d2;
-          const lb = imb * d2;
-          vax -= la * patch[t2];
-          vbx += lb * patch[t2];
-          vay -= la * patch[t2 + 1];
-          vby += lb * patch[t2 + 1];
-          vaz -= la * patch[t2 + 2];
-          vbz += lb * patch[t2 + 2];
-          const ga = fa * d2;
-          const gb = fb * d2;
-          wa0 -= ga * patch[t2 + 9];
-          wb0 += gb * patch[t2 + 12];
-          wa1 -= ga * patch[t2 + 10];
-          wb1 += gb * patch[t2 + 13];
-          wa2 -= ga * patch[t2 + 11];
-          wb2 += gb * patch[t2 + 14];
-        }
-      }
-      if (radius > 0) {
-        const limit = maxT * radius;
-        const w1 = pb + 36;
-        const v1 =
-          patch[w1 + 6] * wb0 -
-          patch[w1 + 3] * wa0 +
-          (patch[w1 + 7] * wb1 - patch[w1 + 4] * wa1) +
-          (patch[w1 + 8] * wb2 - patch[w1 + 5] * wa2);
-        const K1 = fa * patch[w1 + 16] + fb * patch[w1 + 17];
-        const o1 = lambdaW[mf];
-        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
-        const norm2 = n1 * n1;
-        if (norm2 > limit * limit) {
-          const scale = limit / Math.sqrt(norm2);
-          n1 *= scale;
-        }
-        lambdaW[mf] = n1;
-        const d1 = n1 - o1;
-        // Applied one row after the other, as the general loop does.
-        if (d1 !== 0) {
-          const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[w1 + 9];
-          wb0 += gb * patch[w1 + 12];
-          wa1 -= ga * patch[w1 + 10];
-          wb1 += gb * patch[w1 + 13];
-          wa2 -= ga * patch[w1 + 11];
-          wb2 += gb * patch[w1 + 14];
-        }
-      }
-    }
-    for (let cp = first; cp < last; cp += 1) {
-      const rb = cp * 18;
-      const K = fa * rows[rb + 16] + fb * rows[rb + 17];
-      if (!(K > 0)) continue;
-      const vn =
-        rows[rb] * (vbx - vax) +
-        rows[rb + 1] * (vby - vay) +
-        rows[rb + 2] * (vbz - vaz) +
-        (rows[rb + 6] * wb0 - rows[rb + 3] * wa0) +
-        (rows[rb + 7] * wb1 - rows[rb + 4] * wa1) +
-        (rows[rb + 8] * wb2 - rows[rb + 5] * wa2);
-      const old = lambdaN[cp];
-      const nl = Math.max(0, old + (target[cp] - vn) / K);
-      lambdaN[cp] = nl;
-      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
-      const dl = nl - old;
-      if (dl === 0) continue;
-      const moved = Math.abs(dl) * K;
-      if (moved > change) change = moved;
-      const la = ima * dl;
-      const lb = imb * dl;
-      vax -= la * rows[rb];
-      vbx += lb * rows[rb];
-      vay -= la * rows[rb + 1];
-      vby += lb * rows[rb + 1];
-      vaz -= la * rows[rb + 2];
-      vbz += lb * rows[rb + 2];
-      const ga = fa * dl;
-      const gb = fb * dl;
-      wa0 -= ga * rows[rb + 9];
-      wb0 += gb * rows[rb + 12];
-      wa1 -= ga * rows[rb + 10];
-      wb1 += gb * rows[rb + 13];
-      wa2 -= ga * rows[rb + 11];
-      wb2 += gb * rows[rb + 14];
-    }
-    // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
-    V[va] = vax;
-    V[va + 1] = vay;
-    V[va + 2] = vaz;
-    W[wa] = wa0;
-    W[wa + 1] = wa1;
-    W[wa + 2] = wa2;
-    V[vb] = vbx;
-    V[vb + 1] = vby;
-    V[vb + 2] = vbz;
-    W[wb] = wb0;
-    W[wb + 1] = wb1;
-    W[wb + 2] = wb2;
-    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
-  }
-
-  /**
-   * {@link ContactSolver.solveManifold} for n = 4, written out (k = 6, 3 tangent and 3 twist
-   * rows, row stride 31): the same arithmetic in the same order, so results are bit-identical
-   * to the general loop; the velocities of the two bodies stay in locals for the whole manifold.
-   * (Generated from the general loop; keep the two in step.)
-   */
-  private solveManifold4(sb: SolverBodies, mf: number, shock: boolean): void {
-    const rows = this.rows;
-    const patch = this.patchRows;
-    const V = sb.v;
-    const W = sb.w;
-    const a = this.mfA[mf];
-    const b = this.mfB[mf];
-    let fa = 1;
-    let fb = 1;
-    if (shock) {
-      const da = sb.depth[a];
-      const db = sb.depth[b];
-      if (da < db) fa = 0;
-      else if (db < da) fb = 0;
-    }
-    const ima = fa * sb.invMass[a];
-    const imb = fb * sb.invMass[b];
-    const va = a * 4;
-    const vb = b * 4;
-    const wa = a * 6;
-    const wb = b * 6;
-    let vax = V[va],
-      vay = V[va + 1],
-      vaz = V[va + 2],
-      vaw = V[va + 3];
-    let vbx = V[vb],
-      vby = V[vb + 1],
-      vbz = V[vb + 2],
-      vbw = V[vb + 3];
-    let wa0 = W[wa],
-      wa1 = W[wa + 1],
-      wa2 = W[wa + 2],
-      wa3 = W[wa + 3],
-      wa4 = W[wa + 4],
-      wa5 = W[wa + 5];
-    let wb0 = W[wb],
-      wb1 = W[wb + 1],
-      wb2 = W[wb + 2],
-      wb3 = W[wb + 3],
-      wb4 = W[wb + 4],
-      wb5 = W[wb + 5];
-    const mu = this.mfFriction[mf];
-    const first = this.mfFirst[mf];
-    const last = first + this.mfPoints[mf];
-    const lambdaN = this.lambdaN;
-    const lambdaP = this.lambdaP;
-    const lambdaW = this.lambdaW;
-    const target = this.target;
-    const maxLambda = this.maxLambda;
-    let change = 0;
-    if (mu > 0) {
-      let sumN = 0;
-      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
-      const maxT = mu * sumN;
-      const radius = this.mfRadius[mf];
-      const pb = mf * 186;
-      const t1 = pb;
-      const t2 = pb + 31;
-      const t3 = pb + 62;
-      {
-        const v1 =
-          patch[t1] * (vbx - vax) +
-          patch[t1 + 1] * (vby - vay) +
-          patch[t1 + 2] * (vbz - vaz) +
-          patch[t1 + 3] * (vbw - vaw) +
-          (patch[t1 + 10] * wb0 - patch[t1 + 4] * wa0) +
-          (patch[t1 + 11] * wb1 - patch[t1 + 5] * wa1) +
-          (patch[t1 + 12] * wb2 - patch[t1 + 6] * wa2) +
-          (patch[t1 + 13] * wb3 - patch[t1 + 7] * wa3) +
-          (patch[t1 + 14] * wb4 - patch[t1 + 8] * wa4) +
-          (patch[t1 + 15] * wb5 - patch[t1 + 9] * wa5);
-        const v2 =
-          patch[t2] * (vbx - vax) +
-          patch[t2 + 1] * (vby - vay) +
-          patch[t2 + 2] * (vbz - vaz) +
-          patch[t2 + 3] * (vbw - vaw) +
-          (patch[t2 + 10] * wb0 - patch[t2 + 4] * wa0) +
-          (patch[t2 + 11] * wb1 - patch[t2 + 5] * wa1) +
-          (patch[t2 + 12] * wb2 - patch[t2 + 6] * wa2) +
-          (patch[t2 + 13] * wb3 - patch[t2 + 7] * wa3) +
-          (patch[t2 + 14] * wb4 - patch[t2 + 8] * wa4) +
-          (patch[t2 + 15] * wb5 - patch[t2 + 9] * wa5);
-        const v3 =
-          patch[t3] * (vbx - vax) +
-          patch[t3 + 1] * (vby - vay) +
-          patch[t3 + 2] * (vbz - vaz) +
-          patch[t3 + 3] * (vbw - vaw) +
-          (patch[t3 + 10] * wb0 - patch[t3 + 4] * wa0) +
-          (patch[t3 + 11] * wb1 - patch[t3 + 5] * wa1) +
-          (patch[t3 + 12] * wb2 - patch[t3 + 6] * wa2) +
-          (patch[t3 + 13] * wb3 - patch[t3 + 7] * wa3) +
-          (patch[t3 + 14] * wb4 - patch[t3 + 8] * wa4) +
-          (patch[t3 + 15] * wb5 - patch[t3 + 9] * wa5);
-        const K1 = fa * patch[t1 + 29] + fb * patch[t1 + 30];
-        const K2 = fa * patch[t2 + 29] + fb * patch[t2 + 30];
-        const K3 = fa * patch[t3 + 29] + fb * patch[t3 + 30];
-        const o1 = lambdaP[mf * 3];
-        const o2 = lambdaP[mf * 3 + 1];
-        const o3 = lambdaP[mf * 3 + 2];
-        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
-        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
-        let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
-        const norm2 = n1 * n1 + n2 * n2 + n3 * n3;
-        if (norm2 > maxT * maxT) {
-          const scale = maxT / Math.sqrt(norm2);
-          n1 *= scale;
-          n2 *= scale;
-          n3 *= scale;
-        }
-        lambdaP[mf * 3] = n1;
-        lambdaP[mf * 3 + 1] = n2;
-        lambdaP[mf * 3 + 2] = n3;
-        const d1 = n1 - o1;
-        const d2 = n2 - o2;
-        const d3 = n3 - o3;
-        // Applied one row after the other, as the general loop does.
-        if (d1 !== 0) {
-          const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
-          const la = ima * d1;
-          const lb = imb * d1;
-          vax -= la * patch[t1];
-          vbx += lb * patch[t1];
-          vay -= la * patch[t1 + 1];
-          vby += lb * patch[t1 + 1];
-          vaz -= la * patch[t1 + 2];
-          vbz += lb * patch[t1 + 2];
-          vaw -= la * patch[t1 + 3];
-          vbw += lb * patch[t1 + 3];
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[t1 + 16];
-          wb0 += gb * patch[t1 + 22];
-          wa1 -= ga * patch[t1 + 17];
-          wb1 += gb * patch[t1 + 23];
-          wa2 -= ga * patch[t1 + 18];
-          wb2 += gb * patch[t1 + 24];
-          wa3 -= ga * patch[t1 + 19];
-          wb3 += gb * patch[t1 + 25];
-          wa4 -= ga * patch[t1 + 20];
-          wb4 += gb * patch[t1 + 26];
-          wa5 -= ga * patch[t1 + 21];
-          wb5 += gb * patch[t1 + 27];
-        }
-        if (d2 !== 0) {
-          const moved = Math.abs(d2) * K2;
-          if (moved > change) change = moved;
-          const la = ima * d2;
-          const lb = imb * d2;
-          vax -= la * patch[t2];
-          vbx += lb * patch[t2];
-          vay -= la * patch[t2 + 1];
-          vby += lb * patch[t2 + 1];
-          vaz -= la * patch[t2 + 2];
-          vbz += lb * patch[t2 + 2];
-          vaw -= la * patch[t2 + 3];
-          vbw += lb * patch[t2 + 3];
-          const ga = fa * d2;
-          const gb = fb * d2;
-          wa0 -= ga * patch[t2 + 16];
-          wb0 += gb * patch[t2 + 22];
-          wa1 -= ga * patch[t2 + 17];
-          wb1 += gb * patch[t2 + 23];
-          wa2 -= ga * patch[t2 + 18];
-          wb2 += gb * patch[t2 + 24];
-          wa3 -= ga * patch[t2 + 19];
-          wb3 += gb * patch[t2 + 25];
-          wa4 -= ga * patch[t2 + 20];
-          wb4 += gb * patch[t2 + 26];
-          wa5 -= ga * patch[t2 + 21];
-          wb5 += gb * patch[t2 + 27];
-        }
-        if (d3 !== 0) {
-          const moved = Math.abs(d3) * K3;
-          if (moved > change) change = moved;
-          const la = ima * d3;
-          const lb = imb * d3;
-          vax -= la * patch[t3];
-          vbx += lb * patch[t3];
-          vay -= la * patch[t3 + 1];
-          vby += lb * patch[t3 + 1];
-          vaz -= la * patch[t3 + 2];
-          vbz += lb * patch[t3 + 2];
-          vaw -= la * patch[t3 + 3];
-          vbw += lb * patch[t3 + 3];
-          const ga = fa * d3;
-          const gb = fb * d3;
-          wa0 -= ga * patch[t3 + 16];
-          wb0 += gb * patch[t3 + 22];
-          wa1 -= ga * patch[t3 + 17];
-          wb1 += gb * patch[t3 + 23];
-          wa2 -= ga * patch[t3 + 18];
-          wb2 += gb * patch[t3 + 24];
-          wa3 -= ga * patch[t3 + 19];
-          wb3 += gb * patch[t3 + 25];
-          wa4 -= ga * patch[t3 + 20];
-          wb4 += gb * patch[t3 + 26];
-          wa5 -= ga * patch[t3 + 21];
-          wb5 += gb * patch[t3 + 27];
-        }
-      }
-      if (radius > 0) {
-        const limit = maxT * radius;
-        const w1 = pb + 93;
-        const w2 = pb + 124;
-        const w3 = pb + 155;
-        const v1 =
-          patch[w1 + 10] * wb0 -
-          patch[w1 + 4] * wa0 +
-          (patch[w1 + 11] * wb1 - patch[w1 + 5] * wa1) +
-          (patch[w1 + 12] * wb2 - patch[w1 + 6] * wa2) +
-          (patch[w1 + 13] * wb3 - patch[w1 + 7] * wa3) +
-          (patch[w1 + 14] * wb4 - patch[w1 + 8] * wa4) +
-          (patch[w1 + 15] * wb5 - patch[w1 + 9] * wa5);
-        const v2 =
-          patch[w2 + 10] * wb0 -
-          patch[w2 + 4] * wa0 +
-          (patch[w2 + 11] * wb1 - patch[w2 + 5] * wa1) +
-          (patch[w2 + 12] * wb2 - patch[w2 + 6] * wa2) +
-          (patch[w2 + 13] * wb3 - patch[w2 + 7] * wa3) +
-          (patch[w2 + 14] * wb4 - patch[w2 + 8] * wa4) +
-          (patch[w2 + 15] * wb5 - patch[w2 + 9] * wa5);
-        const v3 =
-          patch[w3 + 10] * wb0 -
-          patch[w3 + 4] * wa0 +
-          (patch[w3 + 11] * wb1 - patch[w3 + 5] * wa1) +
-          (patch[w3 + 12] * wb2 - patch[w3 + 6] * wa2) +
-          (patch[w3 + 13] * wb3 - patch[w3 + 7] * wa3) +
-          (patch[w3 + 14] * wb4 - patch[w3 + 8] * wa4) +
-          (patch[w3 + 15] * wb5 - patch[w3 + 9] * wa5);
-        const K1 = fa * patch[w1 + 29] + fb * patch[w1 + 30];
-        const K2 = fa * patch[w2 + 29] + fb * patch[w2 + 30];
-        const K3 = fa * patch[w3 + 29] + fb * patch[w3 + 30];
-        const o1 = lambdaW[mf * 3];
-        const o2 = lambdaW[mf * 3 + 1];
-        const o3 = lambdaW[mf * 3 + 2];
-        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
-        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
-        let n3 = K3 > 0 ? o3 - v3 / K3 : o3;
-        const norm2 = n1 * n1 + n2 * n2 + n3 * n3;
-        if (norm2 > limit * limit) {
-          const scale = limit / Math.sqrt(norm2);
-          n1 *= scale;
-          n2 *= scale;
-          n3 *= scale;
-        }
-        lambdaW[mf * 3] = n1;
-        lambdaW[mf * 3 + 1] = n2;
-        lambdaW[mf * 3 + 2] = n3;
-        const d1 = n1 - o1;
-        const d2 = n2 - o2;
-        const d3 = n3 - o3;
-        // Applied one row after the other, as the general loop does.
-        if (d1 !== 0) {
-          const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[w1 + 16];
-          wb0 += gb * patch[w1 + 22];
-          wa1 -= ga * patch[w1 + 17];
-          wb1 += gb * patch[w1 + 23];
-          wa2 -= ga * patch[w1 + 18];
-          wb2 += gb * patch[w1 + 24];
-          wa3 -= ga * patch[w1 + 19];
-          wb3 += gb * patch[w1 + 25];
-          wa4 -= ga * patch[w1 + 20];
-          wb4 += gb * patch[w1 + 26];
-          wa5 -= ga * patch[w1 + 21];
-          wb5 += gb * patch[w1 + 27];
-        }
-        if (d2 !== 0) {
-          const moved = Math.abs(d2) * K2;
-          if (moved > change) change = moved;
-          const ga = fa * d2;
-          const gb = fb * d2;
-          wa0 -= ga * patch[w2 + 16];
-          wb0 += gb * patch[w2 + 22];
-          wa1 -= ga * patch[w2 + 17];
-          wb1 += gb * patch[w2 + 23];
-          wa2 -= ga * patch[w2 + 18];
-          wb2 += gb * patch[w2 + 24];
-          wa3 -= ga * patch[w2 + 19];
-          wb3 += gb * patch[w2 + 25];
-          wa4 -= ga * patch[w2 + 20];
-          wb4 += gb * patch[w2 + 26];
-          wa5 -= ga * patch[w2 + 21];
-          wb5 += gb * patch[w2 + 27];
-        }
-        if (d3 !== 0) {
-          const moved = Math.abs(d3) * K3;
-          if (moved > change) change = moved;
-          const ga = fa * d3;
-          const gb = fb * d3;
-          wa0 -= ga * patch[w3 + 16];
-          wb0 += gb * patch[w3 + 22];
-          wa1 -= ga * patch[w3 + 17];
-          wb1 += gb * patch[w3 + 23];
-          wa2 -= ga * patch[w3 + 18];
-          wb2 += gb * patch[w3 + 24];
-          wa3 -= ga * patch[w3 + 19];
-          wb3 += gb * patch[w3 + 25];
-          wa4 -= ga * patch[w3 + 20];
-          wb4 += gb * patch[w3 + 26];
-          wa5 -= ga * patch[w3 + 21];
-          wb5 += gb * patch[w3 + 27];
-        }
-      }
-    }
-    for (let cp = first; cp < last; cp += 1) {
-      const rb = cp * 31;
-      const K = fa * rows[rb + 29] + fb * rows[rb + 30];
-      if (!(K > 0)) continue;
-      const vn =
-        rows[rb] * (vbx - vax) +
-        rows[rb + 1] * (vby - vay) +
-        rows[rb + 2] * (vbz - vaz) +
-        rows[rb + 3] * (vbw - vaw) +
-        (rows[rb + 10] * wb0 - rows[rb + 4] * wa0) +
-        (rows[rb + 11] * wb1 - rows[rb + 5] * wa1) +
-        (rows[rb + 12] * wb2 - rows[rb + 6] * wa2) +
-        (rows[rb + 13] * wb3 - rows[rb + 7] * wa3) +
-        (rows[rb + 14] * wb4 - rows[rb + 8] * wa4) +
-        (rows[rb + 15] * wb5 - rows[rb + 9] * wa5);
-      const old = lambdaN[cp];
-      const nl = Math.max(0, old + (target[cp] - vn) / K);
-      lambdaN[cp] = nl;
-      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
-      const dl = nl - old;
-      if (dl === 0) continue;
-      const moved = Math.abs(dl) * K;
-      if (moved > change) change = moved;
-      const la = ima * dl;
-      const lb = imb * dl;
-      vax -= la * rows[rb];
-      vbx += lb * rows[rb];
-      vay -= la * rows[rb + 1];
-      vby += lb * rows[rb + 1];
-      vaz -= la * rows[rb + 2];
-      vbz += lb * rows[rb + 2];
-      vaw -= la * rows[rb + 3];
-      vbw += lb * rows[rb + 3];
-      const ga = fa * dl;
-      const gb = fb * dl;
-      wa0 -= ga * rows[rb + 16];
-      wb0 += gb * rows[rb + 22];
-      wa1 -= ga * rows[rb + 17];
-      wb1 += gb * rows[rb + 23];
-      wa2 -= ga * rows[rb + 18];
-      wb2 += gb * rows[rb + 24];
-      wa3 -= ga * rows[rb + 19];
-      wb3 += gb * rows[rb + 25];
-      wa4 -= ga * rows[rb + 20];
-      wb4 += gb * rows[rb + 26];
-      wa5 -= ga * rows[rb + 21];
-      wb5 += gb * rows[rb + 27];
-    }
-    // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
-    V[va] = vax;
-    V[va + 1] = vay;
-    V[va + 2] = vaz;
-    V[va + 3] = vaw;
-    W[wa] = wa0;
-    W[wa + 1] = wa1;
-    W[wa + 2] = wa2;
-    W[wa + 3] = wa3;
-    W[wa + 4] = wa4;
-    W[wa + 5] = wa5;
-    V[vb] = vbx;
-    V[vb + 1] = vby;
-    V[vb + 2] = vbz;
-    V[vb + 3] = vbw;
-    W[wb] = wb0;
-    W[wb + 1] = wb1;
-    W[wb + 2] = wb2;
-    W[wb + 3] = wb3;
-    W[wb + 4] = wb4;
-    W[wb + 5] = wb5;
-    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
-  }
+  protected abstract solveManifold(sb: SolverBodies, mf: number, shock: boolean): void;
 
   /**
    * `iterations` Gauss–Seidel passes over every manifold, fewer when a pass changes no row's

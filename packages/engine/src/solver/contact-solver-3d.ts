@@ -1,0 +1,284 @@
+/**
+ * The contact solver of 3D: {@link ContactSolver} with the rows and the manifold solve written out
+ * for n = 3 (k = 3, 2 tangent and 1 twist row, row stride 18). `@physin/engine/3d` builds its
+ * world with this one alone, so a 3D app carries neither the 4D copies nor the general loop;
+ * `@physin/engine` builds its worlds with {@link ContactSolverND}, which extends this one.
+ *
+ * Both copies do the same arithmetic in the same order as the general loop of
+ * contact-solver-nd.ts, so results are bit-identical to it (generated from it; keep them in step).
+ *
+ * @module
+ */
+import { ContactSolver, SOLVE_CHANGE } from './contact-solver.js';
+import type { SolverBodies } from './solver-bodies.js';
+
+/** The contact solver for n = 3 alone (see the module comment). */
+export class ContactSolver3 extends ContactSolver {
+  /** {@link ContactSolver.buildRow} for n = 3, written out. */
+  protected buildRow(rows: Float64Array, base: number, a: number, b: number, sb: SolverBodies): void {
+    const k = this.k;
+    const rA = this.rA;
+    const rB = this.rB;
+    const imA = sb.invMass[a];
+    const imB = sb.invMass[b];
+    const IA = a * k * k;
+    const IB = b * k * k;
+    const IW = sb.invInertia;
+    // s ≥ 0 when the body's I⁻¹ is s·identity (then I⁻¹J = s·J), else −1 (see SolverBodies).
+    const isoA = sb.isoInvInertia[a];
+    const isoB = sb.isoInvInertia[b];
+    // The same sums in the same order as the general loop of contact-solver-nd.ts; each sum
+    // starts at `0 +` as the loop's does, so a −0 product still sums to +0.
+    const d0 = rows[base];
+    const d1 = rows[base + 1];
+    const d2 = rows[base + 2];
+    const ja0 = rA[0] * d1 - rA[1] * d0;
+    const jb0 = rB[0] * d1 - rB[1] * d0;
+    rows[base + 3] = ja0;
+    rows[base + 6] = jb0;
+    const ja1 = rA[0] * d2 - rA[2] * d0;
+    const jb1 = rB[0] * d2 - rB[2] * d0;
+    rows[base + 4] = ja1;
+    rows[base + 7] = jb1;
+    const ja2 = rA[1] * d2 - rA[2] * d1;
+    const jb2 = rB[1] * d2 - rB[2] * d1;
+    rows[base + 5] = ja2;
+    rows[base + 8] = jb2;
+    let KA = imA;
+    let KB = imB;
+    const sa0 = isoA >= 0 ? isoA * ja0 : 0 + IW[IA] * ja0 + IW[IA + 1] * ja1 + IW[IA + 2] * ja2;
+    const sb0 = isoB >= 0 ? isoB * jb0 : 0 + IW[IB] * jb0 + IW[IB + 1] * jb1 + IW[IB + 2] * jb2;
+    rows[base + 9] = sa0;
+    rows[base + 12] = sb0;
+    KA += sa0 * ja0;
+    KB += sb0 * jb0;
+    const sa1 = isoA >= 0 ? isoA * ja1 : 0 + IW[IA + 3] * ja0 + IW[IA + 4] * ja1 + IW[IA + 5] * ja2;
+    const sb1 = isoB >= 0 ? isoB * jb1 : 0 + IW[IB + 3] * jb0 + IW[IB + 4] * jb1 + IW[IB + 5] * jb2;
+    rows[base + 10] = sa1;
+    rows[base + 13] = sb1;
+    KA += sa1 * ja1;
+    KB += sb1 * jb1;
+    const sa2 = isoA >= 0 ? isoA * ja2 : 0 + IW[IA + 6] * ja0 + IW[IA + 7] * ja1 + IW[IA + 8] * ja2;
+    const sb2 = isoB >= 0 ? isoB * jb2 : 0 + IW[IB + 6] * jb0 + IW[IB + 7] * jb1 + IW[IB + 8] * jb2;
+    rows[base + 11] = sa2;
+    rows[base + 14] = sb2;
+    KA += sa2 * ja2;
+    KB += sb2 * jb2;
+    const K = KA + KB;
+    rows[base + 15] = K > 0 ? 1 / K : 0;
+    rows[base + 16] = KA;
+    rows[base + 17] = KB;
+  }
+
+  /**
+   * {@link ContactSolver.solveManifold} for n = 3, written out: the velocities of the two bodies
+   * stay in locals for the whole manifold.
+   */
+  protected solveManifold(sb: SolverBodies, mf: number, shock: boolean): void {
+    const rows = this.rows;
+    const patch = this.patchRows;
+    const V = sb.v;
+    const W = sb.w;
+    const a = this.mfA[mf];
+    const b = this.mfB[mf];
+    let fa = 1;
+    let fb = 1;
+    if (shock) {
+      const da = sb.depth[a];
+      const db = sb.depth[b];
+      if (da < db) fa = 0;
+      else if (db < da) fb = 0;
+    }
+    const ima = fa * sb.invMass[a];
+    const imb = fb * sb.invMass[b];
+    const va = a * 3;
+    const vb = b * 3;
+    const wa = a * 3;
+    const wb = b * 3;
+    let vax = V[va],
+      vay = V[va + 1],
+      vaz = V[va + 2];
+    let vbx = V[vb],
+      vby = V[vb + 1],
+      vbz = V[vb + 2];
+    let wa0 = W[wa],
+      wa1 = W[wa + 1],
+      wa2 = W[wa + 2];
+    let wb0 = W[wb],
+      wb1 = W[wb + 1],
+      wb2 = W[wb + 2];
+    const mu = this.mfFriction[mf];
+    const first = this.mfFirst[mf];
+    const last = first + this.mfPoints[mf];
+    const lambdaN = this.lambdaN;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    const target = this.target;
+    const maxLambda = this.maxLambda;
+    let change = 0;
+    if (mu > 0) {
+      let sumN = 0;
+      for (let cp = first; cp < last; cp += 1) sumN += lambdaN[cp];
+      const maxT = mu * sumN;
+      const radius = this.mfRadius[mf];
+      const pb = mf * 54;
+      const t1 = pb;
+      const t2 = pb + 18;
+      {
+        const v1 =
+          patch[t1] * (vbx - vax) +
+          patch[t1 + 1] * (vby - vay) +
+          patch[t1 + 2] * (vbz - vaz) +
+          (patch[t1 + 6] * wb0 - patch[t1 + 3] * wa0) +
+          (patch[t1 + 7] * wb1 - patch[t1 + 4] * wa1) +
+          (patch[t1 + 8] * wb2 - patch[t1 + 5] * wa2);
+        const v2 =
+          patch[t2] * (vbx - vax) +
+          patch[t2 + 1] * (vby - vay) +
+          patch[t2 + 2] * (vbz - vaz) +
+          (patch[t2 + 6] * wb0 - patch[t2 + 3] * wa0) +
+          (patch[t2 + 7] * wb1 - patch[t2 + 4] * wa1) +
+          (patch[t2 + 8] * wb2 - patch[t2 + 5] * wa2);
+        const K1 = fa * patch[t1 + 16] + fb * patch[t1 + 17];
+        const K2 = fa * patch[t2 + 16] + fb * patch[t2 + 17];
+        const o1 = lambdaP[mf * 2];
+        const o2 = lambdaP[mf * 2 + 1];
+        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
+        let n2 = K2 > 0 ? o2 - v2 / K2 : o2;
+        const norm2 = n1 * n1 + n2 * n2;
+        if (norm2 > maxT * maxT) {
+          const scale = maxT / Math.sqrt(norm2);
+          n1 *= scale;
+          n2 *= scale;
+        }
+        lambdaP[mf * 2] = n1;
+        lambdaP[mf * 2 + 1] = n2;
+        const d1 = n1 - o1;
+        const d2 = n2 - o2;
+        // Applied one row after the other, as the general loop does.
+        if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
+          const la = ima * d1;
+          const lb = imb * d1;
+          vax -= la * patch[t1];
+          vbx += lb * patch[t1];
+          vay -= la * patch[t1 + 1];
+          vby += lb * patch[t1 + 1];
+          vaz -= la * patch[t1 + 2];
+          vbz += lb * patch[t1 + 2];
+          const ga = fa * d1;
+          const gb = fb * d1;
+          wa0 -= ga * patch[t1 + 9];
+          wb0 += gb * patch[t1 + 12];
+          wa1 -= ga * patch[t1 + 10];
+          wb1 += gb * patch[t1 + 13];
+          wa2 -= ga * patch[t1 + 11];
+          wb2 += gb * patch[t1 + 14];
+        }
+        if (d2 !== 0) {
+          const moved = Math.abs(d2) * K2;
+          if (moved > change) change = moved;
+          const la = ima * d2;
+          const lb = imb * d2;
+          vax -= la * patch[t2];
+          vbx += lb * patch[t2];
+          vay -= la * patch[t2 + 1];
+          vby += lb * patch[t2 + 1];
+          vaz -= la * patch[t2 + 2];
+          vbz += lb * patch[t2 + 2];
+          const ga = fa * d2;
+          const gb = fb * d2;
+          wa0 -= ga * patch[t2 + 9];
+          wb0 += gb * patch[t2 + 12];
+          wa1 -= ga * patch[t2 + 10];
+          wb1 += gb * patch[t2 + 13];
+          wa2 -= ga * patch[t2 + 11];
+          wb2 += gb * patch[t2 + 14];
+        }
+      }
+      if (radius > 0) {
+        const limit = maxT * radius;
+        const w1 = pb + 36;
+        const v1 =
+          patch[w1 + 6] * wb0 -
+          patch[w1 + 3] * wa0 +
+          (patch[w1 + 7] * wb1 - patch[w1 + 4] * wa1) +
+          (patch[w1 + 8] * wb2 - patch[w1 + 5] * wa2);
+        const K1 = fa * patch[w1 + 16] + fb * patch[w1 + 17];
+        const o1 = lambdaW[mf];
+        let n1 = K1 > 0 ? o1 - v1 / K1 : o1;
+        const norm2 = n1 * n1;
+        if (norm2 > limit * limit) {
+          const scale = limit / Math.sqrt(norm2);
+          n1 *= scale;
+        }
+        lambdaW[mf] = n1;
+        const d1 = n1 - o1;
+        // Applied one row after the other, as the general loop does.
+        if (d1 !== 0) {
+          const moved = Math.abs(d1) * K1;
+          if (moved > change) change = moved;
+          const ga = fa * d1;
+          const gb = fb * d1;
+          wa0 -= ga * patch[w1 + 9];
+          wb0 += gb * patch[w1 + 12];
+          wa1 -= ga * patch[w1 + 10];
+          wb1 += gb * patch[w1 + 13];
+          wa2 -= ga * patch[w1 + 11];
+          wb2 += gb * patch[w1 + 14];
+        }
+      }
+    }
+    for (let cp = first; cp < last; cp += 1) {
+      const rb = cp * 18;
+      const K = fa * rows[rb + 16] + fb * rows[rb + 17];
+      if (!(K > 0)) continue;
+      const vn =
+        rows[rb] * (vbx - vax) +
+        rows[rb + 1] * (vby - vay) +
+        rows[rb + 2] * (vbz - vaz) +
+        (rows[rb + 6] * wb0 - rows[rb + 3] * wa0) +
+        (rows[rb + 7] * wb1 - rows[rb + 4] * wa1) +
+        (rows[rb + 8] * wb2 - rows[rb + 5] * wa2);
+      const old = lambdaN[cp];
+      const nl = Math.max(0, old + (target[cp] - vn) / K);
+      lambdaN[cp] = nl;
+      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
+      const dl = nl - old;
+      if (dl === 0) continue;
+      const moved = Math.abs(dl) * K;
+      if (moved > change) change = moved;
+      const la = ima * dl;
+      const lb = imb * dl;
+      vax -= la * rows[rb];
+      vbx += lb * rows[rb];
+      vay -= la * rows[rb + 1];
+      vby += lb * rows[rb + 1];
+      vaz -= la * rows[rb + 2];
+      vbz += lb * rows[rb + 2];
+      const ga = fa * dl;
+      const gb = fb * dl;
+      wa0 -= ga * rows[rb + 9];
+      wb0 += gb * rows[rb + 12];
+      wa1 -= ga * rows[rb + 10];
+      wb1 += gb * rows[rb + 13];
+      wa2 -= ga * rows[rb + 11];
+      wb2 += gb * rows[rb + 14];
+    }
+    // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
+    V[va] = vax;
+    V[va + 1] = vay;
+    V[va + 2] = vaz;
+    W[wa] = wa0;
+    W[wa + 1] = wa1;
+    W[wa + 2] = wa2;
+    V[vb] = vbx;
+    V[vb + 1] = vby;
+    V[vb + 2] = vbz;
+    W[wb] = wb0;
+    W[wb + 1] = wb1;
+    W[wb + 2] = wb2;
+    if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
+  }
+}

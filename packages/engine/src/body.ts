@@ -22,6 +22,7 @@ import type { InputLimits } from './shapes/limits.js';
 import type { Pose } from './collision/manifold.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
+import { Float64Slab } from './slab.js';
 
 /**
  * @internal What a body needs from the world that owns it: a way to wake it (the world also puts
@@ -141,6 +142,26 @@ function checkSensorFlag(fn: string, label: string, value: unknown): boolean {
 }
 
 let nextBodyId = 1;
+
+/**
+ * Where bodies' records and inertias are cut from (see slab.ts): a body's own ArrayBuffer cost
+ * more to make and to collect than everything else its constructor did.
+ */
+const bodySlab = new Float64Slab();
+
+/** The material of a body whose options give none: one frozen object shared by all of them. */
+const DEFAULT_MATERIAL: Material = Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
+
+/**
+ * The principal inertia last computed for a (shape, D, mass), checked: bodies built in a loop
+ * share a shape and a mass, and its mass properties (a Gamma function for a ball, a sum over the
+ * faces of a mesh) were a tenth of the constructor's time. Only for frozen shapes (every factory
+ * freezes its shapes): a shape that could change must be asked each time.
+ */
+let lastMassShape: Shape | null = null;
+let lastMassD: Dims | null = null;
+let lastMass = 0;
+let lastInertia: Float64Array | null = null;
 
 /** Per-dimension scratch of the body methods (set-up calls, never the step). */
 interface BodyScratch {
@@ -401,12 +422,13 @@ export class Body {
    */
   readonly comOffset: Float64Array | null;
 
-  /** @internal The buffer holding x, R, v, L, w, force, torque (in this order). */
+  /**
+   * @internal The buffer holding x, R, v, L, w, force, torque (in this order) at `storageOffset`;
+   * shared with other bodies (a block of records, see slab.ts).
+   */
   storage: Float64Array;
   /** @internal Offset of this body's record in `storage`. */
   storageOffset: number;
-  /** @internal View of x, R, v, L, w as one record (the part a step snapshot copies). */
-  stateView: Float64Array;
   /** @internal Whether a torque was applied since the last step. */
   hasTorque = false;
   /** @internal The world this body belongs to, or null. */
@@ -559,14 +581,27 @@ export class Body {
       checkComponents(fn, "option 'shape'.frameOffset", frameOffset, lim.maxPosition, 'm');
     }
     if (frameRotor !== undefined) checkRotor(D, 'shape.frameRotor', frameRotor, fn);
-    const inertia = new Float64Array(k);
+    let principal: Float64Array | null = null;
     if (mass > 0) {
-      const mp = shape.massProperties(D, mass);
-      checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
-      checkInertia(fn, "option 'shape' with option 'mass'", mp.inertia, mass);
-      inertia.set(mp.inertia);
+      if (shape === lastMassShape && D === lastMassD && mass === lastMass) principal = lastInertia;
+      else {
+        const mp = shape.massProperties(D, mass);
+        checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
+        checkInertia(fn, "option 'shape' with option 'mass'", mp.inertia, mass);
+        principal = Float64Array.from(mp.inertia);
+        const frozen = Object.isFrozen(shape);
+        lastMassShape = frozen ? shape : null;
+        lastMassD = frozen ? D : null;
+        lastMass = mass;
+        lastInertia = frozen ? principal : null;
+      }
     }
-    // All checks passed: build.
+    // All checks passed: build. One run of the slab holds the record, then inertia and its inverse.
+    const recordLength = Body.recordLength(D);
+    const start = bodySlab.reserve(recordLength + 2 * k);
+    const block = bodySlab.current;
+    const inertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength) * 8, k);
+    if (principal !== null) inertia.set(principal);
     this.id = nextBodyId;
     nextBodyId += 1;
     this.name = name;
@@ -580,11 +615,10 @@ export class Body {
     this.massValue = mass;
     this.invMass = type === 'dynamic' ? 1 / mass : 0;
     this.inertia = inertia;
-    this.invInertia = new Float64Array(k);
+    this.invInertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength + k) * 8, k);
     this.fillInverseInertia();
-    this.storage = new Float64Array(Body.recordLength(D));
-    this.storageOffset = 0;
-    this.stateView = this.storage; // replaced by bindViews
+    this.storage = block;
+    this.storageOffset = start;
     this.bindViews();
 
     const K = D.kernels;
@@ -746,23 +780,33 @@ export class Body {
     this.bindViews();
   }
 
+  /**
+   * @internal A view of x, R, v, L, w as one record (a new view per call: for tests and error
+   * paths; the step reads `storage` at `storageOffset`).
+   */
+  get stateView(): Float64Array {
+    return this.storage.subarray(this.storageOffset, this.storageOffset + Body.stateLength(this.D));
+  }
+
   private bindViews(): void {
     const { n, r, k } = this.D;
     const s = this.storage;
-    let o = this.storageOffset;
-    const take = (len: number): Float64Array => {
-      const view = s.subarray(o, o + len);
-      o += len;
-      return view;
-    };
-    this.stateView = s.subarray(o, o + Body.stateLength(this.D));
-    this.xView = take(n);
-    this.rView = take(r);
-    this.vView = take(n);
-    this.lView = take(k);
-    this.wView = take(k);
-    this.fView = take(n);
-    this.tView = take(k);
+    const buffer = s.buffer;
+    // Views made straight on the buffer: subarray() looks up the species constructor each time.
+    let at = s.byteOffset + this.storageOffset * 8;
+    this.xView = new Float64Array(buffer, at, n);
+    at += n * 8;
+    this.rView = new Float64Array(buffer, at, r);
+    at += r * 8;
+    this.vView = new Float64Array(buffer, at, n);
+    at += n * 8;
+    this.lView = new Float64Array(buffer, at, k);
+    at += k * 8;
+    this.wView = new Float64Array(buffer, at, k);
+    at += k * 8;
+    this.fView = new Float64Array(buffer, at, n);
+    at += n * 8;
+    this.tView = new Float64Array(buffer, at, k);
   }
 
   private fillInverseInertia(): void {
@@ -1198,9 +1242,7 @@ function checkListener(fn: string, type: unknown, listener: unknown): void {
 }
 
 function checkMaterial(material: unknown, fn: string): Material {
-  if (material === undefined) {
-    return Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
-  }
+  if (material === undefined) return DEFAULT_MATERIAL;
   if (material === null || typeof material !== 'object') {
     throw new TypeError(
       `${fn}: option 'material' must be an object { friction, restitution }, got ${material === null ? 'null' : typeof material}`,

@@ -11,6 +11,8 @@
  */
 
 const NULL = -1;
+/** The user id of a leaf marked to leave at the next rebuild (user ids are >= 0). */
+const DEAD = -2;
 
 /**
  * The (n−1)-dimensional measure of the boundary of a box with extents e: 2·Σ_k Π_{j≠k} e_j
@@ -153,10 +155,19 @@ export class DynamicAabbTree {
   }
 
   /**
+   * Marks a leaf of the tree to leave it at the next {@link rebuild} (which frees it). Until then
+   * the tree must not be queried: the leaf is still in it.
+   */
+  markDead(leaf: number): void {
+    this.userId[leaf] = DEAD;
+  }
+
+  /**
    * Builds the tree again, top-down, over its leaves and the new leaves `extra[0 .. count)` (made
-   * by {@link createLeaf}): the inner nodes are freed and made anew, the leaves keep their node
-   * indices. For many new leaves at once, where one insertion each would cost more and give a
-   * worse tree (see broadphase-tree-build.ts).
+   * by {@link createLeaf}); leaves marked by {@link markDead} are freed. The inner nodes are freed
+   * and made anew, the other leaves keep their node indices. For many new or dead leaves at once,
+   * where one insertion or removal each would cost more and give a worse tree (see
+   * broadphase-tree-build.ts).
    */
   rebuild(extra: Int32Array, count: number): void {
     const total = this.linkedLeaves + count;
@@ -169,7 +180,8 @@ export class DynamicAabbTree {
       while (top > 0) {
         const node = this.stack[--top]!;
         if (this.height[node] === 0) {
-          leaves[m++] = node;
+          if (this.userId[node] === DEAD) this.freeNode(node);
+          else leaves[m++] = node;
           continue;
         }
         if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);

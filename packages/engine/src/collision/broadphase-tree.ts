@@ -2,11 +2,12 @@
  * The default broadphase: a dynamic AABB tree of fattened boxes. Only proxies that left their
  * fattened box are reinserted and queried, so the cost of an update follows what moved.
  *
- * New proxies wait outside the tree until it is next used (the update, a query, a ray): a few are
- * then inserted one by one, but a batch at least half the size of the tree has the whole tree
- * built again top-down (broadphase-tree-build.ts). Adding 32,000 bodies before a step so costs
- * one build of O(N log N) instead of 32,000 insertions with their refits (issue 19). The tree's
- * shape never shows in the results: pairs are sorted, and queries order their own results.
+ * New proxies wait outside the tree, and destroyed ones stay in it, until it is next used (the
+ * update, a query, a ray): a few changes are then made one by one, but a batch at least half the
+ * size of the tree has the whole tree built again top-down (broadphase-tree-build.ts). Adding
+ * 32,000 bodies before a step so costs one build of O(N log N) instead of 32,000 insertions with
+ * their refits, and removing them all one walk of the tree (issue 19). The tree's shape never
+ * shows in the results: pairs are sorted, and queries order their own results.
  */
 import type { BroadphaseOptions, ProxyRayCast } from './broadphase.js';
 import { DynamicAabbTree } from './broadphase-aabb-tree.js';
@@ -35,6 +36,9 @@ export class TreeBroadphase extends BroadphaseBase {
   /** Ids whose leaves wait, in the order they came (an id whose flag was cleared is skipped). */
   private pending: Int32Array;
   private pendingCount = 0;
+  /** Leaves of destroyed proxies still in the tree, to leave it before it is next read. */
+  private doomed: Int32Array;
+  private doomedCount = 0;
   /** The walk of the tree against itself, made when first needed. */
   private selfPairs: TreeSelfPairs | null = null;
 
@@ -45,6 +49,7 @@ export class TreeBroadphase extends BroadphaseBase {
     this.leafOf = new Int32Array(this.capacity).fill(-1);
     this.waiting = new Uint8Array(this.capacity);
     this.pending = new Int32Array(16);
+    this.doomed = new Int32Array(16);
   }
 
   /** The tree of fattened boxes, every proxy in it (exposed read-only for tests and diagnostics). */
@@ -56,11 +61,7 @@ export class TreeBroadphase extends BroadphaseBase {
   protected onInsert(id: number): void {
     this.leafOf[id] = this.boxTree.createLeaf(id, this.fatMin, this.fatMax, id * this.n);
     this.waiting[id] = 1;
-    if (this.pendingCount === this.pending.length) {
-      const next = new Int32Array(2 * this.pending.length);
-      next.set(this.pending);
-      this.pending = next;
-    }
+    if (this.pendingCount === this.pending.length) this.pending = grown(this.pending);
     this.pending[this.pendingCount++] = id;
   }
 
@@ -68,7 +69,12 @@ export class TreeBroadphase extends BroadphaseBase {
     if (this.waiting[id] === 1) {
       this.waiting[id] = 0;
       this.boxTree.dropLeaf(this.leafOf[id]!);
-    } else this.boxTree.remove(this.leafOf[id]!);
+    } else {
+      // Out of the tree at the next flush: removing 32,000 leaves one by one refitted the path to
+      // the root each time, where emptying the tree at once costs one walk of it.
+      if (this.doomedCount === this.doomed.length) this.doomed = grown(this.doomed);
+      this.doomed[this.doomedCount++] = this.leafOf[id]!;
+    }
     this.leafOf[id] = -1;
   }
 
@@ -87,11 +93,12 @@ export class TreeBroadphase extends BroadphaseBase {
   }
 
   /**
-   * Puts the waiting leaves into the tree: one by one when they are few beside the tree, else by
-   * building the tree again over all its leaves. Called before anything reads the tree.
+   * Takes the leaves of destroyed proxies out of the tree and puts the waiting leaves in: one by
+   * one when they are few beside the tree, else by building the tree again over the leaves that
+   * stay. Called before anything reads the tree.
    */
   private flushPending(): void {
-    if (this.pendingCount === 0) return;
+    if (this.pendingCount === 0 && this.doomedCount === 0) return;
     const pending = this.pending;
     let count = 0;
     for (let i = 0; i < this.pendingCount; i += 1) {
@@ -102,8 +109,17 @@ export class TreeBroadphase extends BroadphaseBase {
     }
     this.pendingCount = 0;
     const tree = this.boxTree;
-    if (count >= BULK_MIN && 2 * count >= tree.leafCount) tree.rebuild(pending, count);
-    else for (let i = 0; i < count; i += 1) tree.linkLeaf(pending[i]!);
+    const doomed = this.doomed;
+    const dead = this.doomedCount;
+    this.doomedCount = 0;
+    const changes = count + dead;
+    if (changes >= BULK_MIN && 2 * changes >= tree.leafCount) {
+      for (let i = 0; i < dead; i += 1) tree.markDead(doomed[i]!);
+      tree.rebuild(pending, count);
+      return;
+    }
+    for (let i = 0; i < dead; i += 1) tree.remove(doomed[i]!);
+    for (let i = 0; i < count; i += 1) tree.linkLeaf(pending[i]!);
   }
 
   protected collectBoxCandidates(): void {
@@ -164,4 +180,11 @@ export class TreeBroadphase extends BroadphaseBase {
     this.flushPending();
     return this.boxTree.rayCast(this.rayO, this.rayD, limit, cast);
   }
+}
+
+/** A copy of `a` twice as long. */
+function grown(a: Int32Array): Int32Array {
+  const next = new Int32Array(2 * a.length);
+  next.set(a);
+  return next;
 }

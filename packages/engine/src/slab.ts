@@ -10,6 +10,8 @@
  * @module
  */
 
+import type { Pose } from './collision/manifold.js';
+
 /** Records per block: large enough that the blocks' own cost vanishes, small enough to waste little. */
 const BLOCK_NUMBERS = 4096;
 
@@ -47,4 +49,15 @@ export class Float64Slab {
   get current(): Float64Array {
     return this.block;
   }
+}
+
+/**
+ * @internal A pose at the origin with the identity rotation (as `createPose` makes), its x and M
+ * cut from `slab`: the pose every body gets when it joins a world.
+ */
+export function slabPose(slab: Float64Slab, n: number): Pose {
+  const x = slab.take(n);
+  const M = slab.take(n * n);
+  for (let i = 0; i < n; i += 1) M[i * n + i] = 1;
+  return { x, M };
 }

@@ -54,6 +54,10 @@ import { defaultParams, mergeParams, scaledParams } from './params.js';
 import { checkComponents, inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
+import { Float64Slab, slabPose } from './slab.js';
+
+/** Where the poses of bodies joining a world are cut from (see slab.ts: one buffer per pose cost more than the rest of addBody). */
+const poseSlab = new Float64Slab();
 
 /** What a world holds and what its last sub-step did, counted ({@link WorldBase.stats}). */
 export interface WorldStats {
@@ -551,7 +555,7 @@ export class WorldBase {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) already belongs to another world; remove it there first`);
     }
     // Bounds first: a body so far out that its box overflows is refused before anything changes.
-    if (body.pose === null || body.pose.x.length !== this.n) body.pose = createPose(this.n);
+    if (body.pose === null || body.pose.x.length !== this.n) body.pose = slabPose(poseSlab, this.n);
     this.updatePose(body);
     const sc = this.scratch;
     const isHalfSpace = body.shape.kind === 'halfspace';

@@ -464,7 +464,8 @@ export class Body {
   private lView!: Float64Array;
   private wView!: Float64Array;
   private fView!: Float64Array;
-  private tView!: Float64Array;
+  /** Made when first asked for (a torque is rare: most bodies never need the view). */
+  private tView: Float64Array | null = null;
 
   /**
    * Builds a body. Every option is checked before anything is built (TypeError for a wrong type or
@@ -698,7 +699,7 @@ export class Body {
   }
   /** Torque accumulated since the last step (N·m, bivector, k numbers). */
   get torque(): Float64Array {
-    return this.tView;
+    return this.tView ?? this.bindTorque();
   }
 
   /** A short description for messages: `body 7 ('crate')`. */
@@ -805,8 +806,16 @@ export class Body {
     this.wView = new Float64Array(buffer, at, k);
     at += k * 8;
     this.fView = new Float64Array(buffer, at, n);
-    at += n * 8;
-    this.tView = new Float64Array(buffer, at, k);
+    this.tView = null; // (made again on the new storage when asked for)
+  }
+
+  /** Makes the torque view (after force in the record) and returns it. */
+  private bindTorque(): Float64Array {
+    const s = this.storage;
+    const at = s.byteOffset + (this.storageOffset + Body.stateLength(this.D) + this.D.n) * 8;
+    const view = new Float64Array(s.buffer, at, this.D.k);
+    this.tView = view;
+    return view;
   }
 
   private fillInverseInertia(): void {
@@ -1024,13 +1033,13 @@ export class Body {
     checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
     checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
     const torque = scratchFor(this.D).bivector;
-    if (!wedgeSumFinite(this.D, torque, this.tView, r, f)) {
+    if (!wedgeSumFinite(this.D, torque, this.torque, r, f)) {
       throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
     }
     const maxT = inputLimits.maxTorque;
     for (let p = 0; p < this.D.k; p += 1) {
       const a = Math.abs(torque[p]!);
-      if (!(a <= maxT || a <= Math.abs(this.tView[p]!))) {
+      if (!(a <= maxT || a <= Math.abs(this.torque[p]!))) {
         throw new RangeError(
           `${fn}: arguments 'f' and 'r' would make ${this.label}'s torque[${p}] ${torque[p]}, beyond ±${formatBound(maxT)} N·m (Body.limits); nothing was changed`,
         );
@@ -1038,7 +1047,7 @@ export class Body {
     }
     this.checkAngularAcceleration(fn, "arguments 'f' and 'r'", torque);
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
-    this.tView.set(torque);
+    this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -1050,11 +1059,11 @@ export class Body {
     checkBivector(this.D, 't', t, fn);
     checkComponents(fn, "argument 't'", t, inputLimits.maxTorque, 'N·m');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 't', this.label, 'torque', this.tView, t, 1, inputLimits.maxTorque, 'N·m');
+    checkSumBounded(fn, 't', this.label, 'torque', this.torque, t, 1, inputLimits.maxTorque, 'N·m');
     const torque = scratchFor(this.D).bivector;
-    for (let p = 0; p < this.D.k; p += 1) torque[p] = this.tView[p]! + t[p]!;
+    for (let p = 0; p < this.D.k; p += 1) torque[p] = this.torque[p]! + t[p]!;
     this.checkAngularAcceleration(fn, "argument 't'", torque);
-    this.tView.set(torque);
+    this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -1217,7 +1226,7 @@ export class Body {
     let next = 0;
     for (let p = 0; p < this.D.k; p += 1) next = Math.max(next, Math.abs(scratch.omega[p]!));
     if (next <= max) return;
-    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.tView, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.torque, scratch.tmp);
     let now = 0;
     for (let p = 0; p < this.D.k; p += 1) now = Math.max(now, Math.abs(scratch.alpha[p]!));
     if (next <= now) return;
@@ -1230,7 +1239,7 @@ export class Body {
   clearForces(): void {
     this.fView.fill(0);
     if (this.hasTorque) {
-      this.tView.fill(0);
+      this.torque.fill(0);
       this.hasTorque = false;
     }
   }

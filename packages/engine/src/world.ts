@@ -954,9 +954,15 @@ export class WorldBase {
   /** pose.x = body.x, pose.M = the matrix of body.R. */
   private updatePose(body: Body): void {
     const pose = body.pose!;
-    pose.x.set(body.x);
+    // A loop, not pose.x.set(): a builtin call costs more than copying n numbers.
+    const px = pose.x;
+    const x = body.x;
+    for (let i = 0; i < px.length; i += 1) px[i] = x[i]!;
     this.D.kernels.toMatrix(pose.M, body.R);
-    const ids = this.partProxies[body.proxyId];
+    // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
+    const id = body.proxyId;
+    if (id < 0) return;
+    const ids = this.partProxies[id];
     if (ids !== undefined && ids !== null) this.updatePartPoses(body, ids);
   }
 

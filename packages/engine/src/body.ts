@@ -156,12 +156,15 @@ const DEFAULT_MATERIAL: Material = Object.freeze({ friction: bodyDefaults.fricti
  * The principal inertia last computed for a (shape, D, mass), checked: bodies built in a loop
  * share a shape and a mass, and its mass properties (a Gamma function for a ball, a sum over the
  * faces of a mesh) were a tenth of the constructor's time. Only for frozen shapes (every factory
- * freezes its shapes): a shape that could change must be asked each time.
+ * freezes its shapes): a shape that could change must be asked each time. The dynamic bodies of
+ * that (shape, D, mass) share this array as their `inertia`, and `lastInverse` as `invInertia`
+ * (two views fewer per body; a body copies them before it changes them, see ownInertia).
  */
 let lastMassShape: Shape | null = null;
 let lastMassD: Dims | null = null;
 let lastMass = 0;
 let lastInertia: Float64Array | null = null;
+let lastInverse: Float64Array | null = null;
 
 /** Per-dimension scratch of the body methods (set-up calls, never the step). */
 interface BodyScratch {
@@ -411,11 +414,16 @@ export class Body {
   invMass: number;
   /**
    * Principal inertia in the body frame (k numbers, kg·m²); zeros when the body has no mass.
-   * Read only: use `setMass` to change it.
+   * Read only: use `setMass` to change it (bodies of the same shape and mass may share the array).
    */
   readonly inertia: Float64Array;
-  /** Inverse principal inertia (k numbers, body frame); zeros for static and kinematic bodies. Read only. */
+  /**
+   * Inverse principal inertia (k numbers, body frame); zeros for static and kinematic bodies. Read
+   * only (shared like `inertia`).
+   */
   readonly invInertia: Float64Array;
+  /** Whether `inertia` and `invInertia` are this body's own, not the arrays its (shape, mass) shares. */
+  private ownsInertia: boolean;
   /**
    * @internal The centre of mass seen from the origin of the coordinates the shape was described
    * in, in the body frame (n numbers): x = origin + R·comOffset. null when the two coincide.
@@ -595,14 +603,25 @@ export class Body {
         lastMassD = frozen ? D : null;
         lastMass = mass;
         lastInertia = frozen ? principal : null;
+        lastInverse = null;
       }
     }
-    // All checks passed: build. One run of the slab holds the record, then inertia and its inverse.
+    // All checks passed: build. One run of the slab holds the record, then (unless this dynamic
+    // body shares the arrays of its shape and mass) inertia and its inverse.
+    const shares = type === 'dynamic' && principal !== null && principal === lastInertia;
     const recordLength = Body.recordLength(D);
-    const start = bodySlab.reserve(recordLength + 2 * k);
+    const start = bodySlab.reserve(shares ? recordLength : recordLength + 2 * k);
     const block = bodySlab.current;
-    const inertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength) * 8, k);
-    if (principal !== null) inertia.set(principal);
+    let inertia: Float64Array;
+    let invInertia: Float64Array;
+    if (shares) {
+      inertia = principal!;
+      invInertia = lastInverse ??= inverseOf(principal!);
+    } else {
+      inertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength) * 8, k);
+      invInertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength + k) * 8, k);
+      if (principal !== null) inertia.set(principal);
+    }
     this.id = nextBodyId;
     nextBodyId += 1;
     this.name = name;
@@ -616,8 +635,9 @@ export class Body {
     this.massValue = mass;
     this.invMass = type === 'dynamic' ? 1 / mass : 0;
     this.inertia = inertia;
-    this.invInertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength + k) * 8, k);
-    this.fillInverseInertia();
+    this.invInertia = invInertia;
+    this.ownsInertia = !shares;
+    if (!shares) this.fillInverseInertia();
     this.storage = block;
     this.storageOffset = start;
     this.bindViews();
@@ -816,6 +836,23 @@ export class Body {
     const view = new Float64Array(s.buffer, at, this.D.k);
     this.tView = view;
     return view;
+  }
+
+  /**
+   * @internal Gives the body inertia arrays of its own (copies of the ones its shape and mass
+   * share) before anything writes into them: setMass, a snapshot's restore.
+   */
+  ownInertia(): void {
+    if (this.ownsInertia) return;
+    const k = this.D.k;
+    const inertia = bodySlab.take(k);
+    const invInertia = bodySlab.take(k);
+    inertia.set(this.inertia);
+    invInertia.set(this.invInertia);
+    const self = this as unknown as { inertia: Float64Array; invInertia: Float64Array };
+    self.inertia = inertia;
+    self.invInertia = invInertia;
+    this.ownsInertia = true;
   }
 
   private fillInverseInertia(): void {
@@ -1179,6 +1216,7 @@ export class Body {
       this.motion = MOTION_STATIC;
       this.massValue = 0;
       this.invMass = 0;
+      this.ownInertia();
       this.inertia.fill(0);
       this.fillInverseInertia();
       this.vView.fill(0);
@@ -1206,6 +1244,7 @@ export class Body {
     if (this.motion === MOTION_STATIC) this.motion = MOTION_DYNAMIC;
     this.massValue = m;
     this.invMass = this.motion === MOTION_DYNAMIC ? 1 / m : 0;
+    this.ownInertia();
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
     this.lView.set(L);
@@ -1243,6 +1282,13 @@ export class Body {
       this.hasTorque = false;
     }
   }
+}
+
+/** The inverse inertia of a dynamic body of principal inertia `I` (as fillInverseInertia writes it). */
+function inverseOf(I: Float64Array): Float64Array {
+  const inv = new Float64Array(I.length);
+  for (let p = 0; p < I.length; p += 1) inv[p] = I[p]! > 0 ? 1 / I[p]! : 0;
+  return inv;
 }
 
 function checkListener(fn: string, type: unknown, listener: unknown): void {

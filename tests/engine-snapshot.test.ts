@@ -630,7 +630,6 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'comOffset',
     'storage',
     'storageOffset',
-    'stateView',
     'hasTorque',
     'owner',
     'proxyId',
@@ -651,6 +650,8 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'wView',
     'fView',
     'tView',
+    // derived: whether inertia and invInertia are shared with bodies of the same shape and mass (a restored body owns its own)
+    'ownsInertia',
   ],
   World: [
     'D',
@@ -777,8 +778,15 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'rayD',
     'shift',
     'incremental',
-    'tree',
+    // the tree and the changes waiting for it: rebuilt from the fat boxes by a restore
+    'boxTree',
     'leafOf',
+    'waiting',
+    'pending',
+    'pendingCount',
+    'doomed',
+    'doomedCount',
+    'selfPairs',
   ],
   ContactEvents: [
     'n',

@@ -119,27 +119,33 @@ export function checkDims(D: unknown, fn?: string): asserts D is Dims {
 
 /** Checks an input vector: n finite numbers (TypeError for a wrong length, RangeError for NaN/Infinity). */
 export function checkVector(D: Dims, name: string, v: unknown, fn?: string): asserts v is ArrayLike<number> {
-  checkArray(name, v, D.n, `a vector for n = ${D.n}`, fn);
+  // The description is built only for the error: made on every call, it cost more than the check.
+  if (isArrayLike(v) && v.length === D.n) checkFinite(name, v, fn);
+  else checkArray(name, v, D.n, `a vector for n = ${D.n}`, fn);
 }
 
 /** Checks an input bivector: k = n(n-1)/2 finite numbers. */
 export function checkBivector(D: Dims, name: string, B: unknown, fn?: string): asserts B is ArrayLike<number> {
-  checkArray(name, B, D.k, `a bivector for n = ${D.n}`, fn);
+  if (isArrayLike(B) && B.length === D.k) checkFinite(name, B, fn);
+  else checkArray(name, B, D.k, `a bivector for n = ${D.n}`, fn);
 }
 
 /** Checks an input rotor: r = 2^(n-1) finite numbers. */
 export function checkRotor(D: Dims, name: string, R: unknown, fn?: string): asserts R is ArrayLike<number> {
-  checkArray(name, R, D.r, `a rotor for n = ${D.n}`, fn);
+  if (isArrayLike(R) && R.length === D.r) checkFinite(name, R, fn);
+  else checkArray(name, R, D.r, `a rotor for n = ${D.n}`, fn);
 }
 
 /** Checks an input n×n matrix (row-major): n*n finite numbers. */
 export function checkMatrix(D: Dims, name: string, M: unknown, fn?: string): asserts M is ArrayLike<number> {
-  checkArray(name, M, D.n * D.n, `an ${D.n}x${D.n} matrix`, fn);
+  if (isArrayLike(M) && M.length === D.n * D.n) checkFinite(name, M, fn);
+  else checkArray(name, M, D.n * D.n, `an ${D.n}x${D.n} matrix`, fn);
 }
 
 /** Checks an input k×k operator (row-major, e.g. an inertia operator): k*k finite numbers. */
 export function checkOperator(D: Dims, name: string, M: unknown, fn?: string): asserts M is ArrayLike<number> {
-  checkArray(name, M, D.k * D.k, `a ${D.k}x${D.k} bivector operator for n = ${D.n}`, fn);
+  if (isArrayLike(M) && M.length === D.k * D.k) checkFinite(name, M, fn);
+  else checkArray(name, M, D.k * D.k, `a ${D.k}x${D.k} bivector operator for n = ${D.n}`, fn);
 }
 
 /**

@@ -22,6 +22,7 @@ import type { InputLimits } from './shapes/limits.js';
 import type { Pose } from './collision/manifold.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import type { CollisionEvent, CollisionListener } from './contacts/contact-events.js';
+import { Float64Slab } from './slab.js';
 
 /**
  * @internal What a body needs from the world that owns it: a way to wake it (the world also puts
@@ -141,6 +142,29 @@ function checkSensorFlag(fn: string, label: string, value: unknown): boolean {
 }
 
 let nextBodyId = 1;
+
+/**
+ * Where bodies' records and inertias are cut from (see slab.ts): a body's own ArrayBuffer cost
+ * more to make and to collect than everything else its constructor did.
+ */
+const bodySlab = new Float64Slab();
+
+/** The material of a body whose options give none: one frozen object shared by all of them. */
+const DEFAULT_MATERIAL: Material = Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
+
+/**
+ * The principal inertia last computed for a (shape, D, mass), checked: bodies built in a loop
+ * share a shape and a mass, and its mass properties (a Gamma function for a ball, a sum over the
+ * faces of a mesh) were a tenth of the constructor's time. Only for frozen shapes (every factory
+ * freezes its shapes): a shape that could change must be asked each time. The dynamic bodies of
+ * that (shape, D, mass) share this array as their `inertia`, and `lastInverse` as `invInertia`
+ * (two views fewer per body; a body copies them before it changes them, see ownInertia).
+ */
+let lastMassShape: Shape | null = null;
+let lastMassD: Dims | null = null;
+let lastMass = 0;
+let lastInertia: Float64Array | null = null;
+let lastInverse: Float64Array | null = null;
 
 /** Per-dimension scratch of the body methods (set-up calls, never the step). */
 interface BodyScratch {
@@ -390,23 +414,29 @@ export class Body {
   invMass: number;
   /**
    * Principal inertia in the body frame (k numbers, kg·m²); zeros when the body has no mass.
-   * Read only: use `setMass` to change it.
+   * Read only: use `setMass` to change it (bodies of the same shape and mass may share the array).
    */
   readonly inertia: Float64Array;
-  /** Inverse principal inertia (k numbers, body frame); zeros for static and kinematic bodies. Read only. */
+  /**
+   * Inverse principal inertia (k numbers, body frame); zeros for static and kinematic bodies. Read
+   * only (shared like `inertia`).
+   */
   readonly invInertia: Float64Array;
+  /** Whether `inertia` and `invInertia` are this body's own, not the arrays its (shape, mass) shares. */
+  private ownsInertia: boolean;
   /**
    * @internal The centre of mass seen from the origin of the coordinates the shape was described
    * in, in the body frame (n numbers): x = origin + R·comOffset. null when the two coincide.
    */
   readonly comOffset: Float64Array | null;
 
-  /** @internal The buffer holding x, R, v, L, w, force, torque (in this order). */
+  /**
+   * @internal The buffer holding x, R, v, L, w, force, torque (in this order) at `storageOffset`;
+   * shared with other bodies (a block of records, see slab.ts).
+   */
   storage: Float64Array;
   /** @internal Offset of this body's record in `storage`. */
   storageOffset: number;
-  /** @internal View of x, R, v, L, w as one record (the part a step snapshot copies). */
-  stateView: Float64Array;
   /** @internal Whether a torque was applied since the last step. */
   hasTorque = false;
   /** @internal The world this body belongs to, or null. */
@@ -442,7 +472,8 @@ export class Body {
   private lView!: Float64Array;
   private wView!: Float64Array;
   private fView!: Float64Array;
-  private tView!: Float64Array;
+  /** Made when first asked for (a torque is rare: most bodies never need the view). */
+  private tView: Float64Array | null = null;
 
   /**
    * Builds a body. Every option is checked before anything is built (TypeError for a wrong type or
@@ -559,14 +590,38 @@ export class Body {
       checkComponents(fn, "option 'shape'.frameOffset", frameOffset, lim.maxPosition, 'm');
     }
     if (frameRotor !== undefined) checkRotor(D, 'shape.frameRotor', frameRotor, fn);
-    const inertia = new Float64Array(k);
+    let principal: Float64Array | null = null;
     if (mass > 0) {
-      const mp = shape.massProperties(D, mass);
-      checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
-      checkInertia(fn, "option 'shape' with option 'mass'", mp.inertia, mass);
-      inertia.set(mp.inertia);
+      if (shape === lastMassShape && D === lastMassD && mass === lastMass) principal = lastInertia;
+      else {
+        const mp = shape.massProperties(D, mass);
+        checkBivector(D, 'shape.massProperties(D, mass).inertia', mp.inertia, fn);
+        checkInertia(fn, "option 'shape' with option 'mass'", mp.inertia, mass);
+        principal = Float64Array.from(mp.inertia);
+        const frozen = Object.isFrozen(shape);
+        lastMassShape = frozen ? shape : null;
+        lastMassD = frozen ? D : null;
+        lastMass = mass;
+        lastInertia = frozen ? principal : null;
+        lastInverse = null;
+      }
     }
-    // All checks passed: build.
+    // All checks passed: build. One run of the slab holds the record, then (unless this dynamic
+    // body shares the arrays of its shape and mass) inertia and its inverse.
+    const shares = type === 'dynamic' && principal !== null && principal === lastInertia;
+    const recordLength = Body.recordLength(D);
+    const start = bodySlab.reserve(shares ? recordLength : recordLength + 2 * k);
+    const block = bodySlab.current;
+    let inertia: Float64Array;
+    let invInertia: Float64Array;
+    if (shares) {
+      inertia = principal!;
+      invInertia = lastInverse ??= inverseOf(principal!);
+    } else {
+      inertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength) * 8, k);
+      invInertia = new Float64Array(block.buffer, block.byteOffset + (start + recordLength + k) * 8, k);
+      if (principal !== null) inertia.set(principal);
+    }
     this.id = nextBodyId;
     nextBodyId += 1;
     this.name = name;
@@ -580,11 +635,11 @@ export class Body {
     this.massValue = mass;
     this.invMass = type === 'dynamic' ? 1 / mass : 0;
     this.inertia = inertia;
-    this.invInertia = new Float64Array(k);
-    this.fillInverseInertia();
-    this.storage = new Float64Array(Body.recordLength(D));
-    this.storageOffset = 0;
-    this.stateView = this.storage; // replaced by bindViews
+    this.invInertia = invInertia;
+    this.ownsInertia = !shares;
+    if (!shares) this.fillInverseInertia();
+    this.storage = block;
+    this.storageOffset = start;
     this.bindViews();
 
     const K = D.kernels;
@@ -664,7 +719,7 @@ export class Body {
   }
   /** Torque accumulated since the last step (N·m, bivector, k numbers). */
   get torque(): Float64Array {
-    return this.tView;
+    return this.tView ?? this.bindTorque();
   }
 
   /** A short description for messages: `body 7 ('crate')`. */
@@ -746,23 +801,58 @@ export class Body {
     this.bindViews();
   }
 
+  /**
+   * @internal A view of x, R, v, L, w as one record (a new view per call: for tests and error
+   * paths; the step reads `storage` at `storageOffset`).
+   */
+  get stateView(): Float64Array {
+    return this.storage.subarray(this.storageOffset, this.storageOffset + Body.stateLength(this.D));
+  }
+
   private bindViews(): void {
     const { n, r, k } = this.D;
     const s = this.storage;
-    let o = this.storageOffset;
-    const take = (len: number): Float64Array => {
-      const view = s.subarray(o, o + len);
-      o += len;
-      return view;
-    };
-    this.stateView = s.subarray(o, o + Body.stateLength(this.D));
-    this.xView = take(n);
-    this.rView = take(r);
-    this.vView = take(n);
-    this.lView = take(k);
-    this.wView = take(k);
-    this.fView = take(n);
-    this.tView = take(k);
+    const buffer = s.buffer;
+    // Views made straight on the buffer: subarray() looks up the species constructor each time.
+    let at = s.byteOffset + this.storageOffset * 8;
+    this.xView = new Float64Array(buffer, at, n);
+    at += n * 8;
+    this.rView = new Float64Array(buffer, at, r);
+    at += r * 8;
+    this.vView = new Float64Array(buffer, at, n);
+    at += n * 8;
+    this.lView = new Float64Array(buffer, at, k);
+    at += k * 8;
+    this.wView = new Float64Array(buffer, at, k);
+    at += k * 8;
+    this.fView = new Float64Array(buffer, at, n);
+    this.tView = null; // (made again on the new storage when asked for)
+  }
+
+  /** Makes the torque view (after force in the record) and returns it. */
+  private bindTorque(): Float64Array {
+    const s = this.storage;
+    const at = s.byteOffset + (this.storageOffset + Body.stateLength(this.D) + this.D.n) * 8;
+    const view = new Float64Array(s.buffer, at, this.D.k);
+    this.tView = view;
+    return view;
+  }
+
+  /**
+   * @internal Gives the body inertia arrays of its own (copies of the ones its shape and mass
+   * share) before anything writes into them: setMass, a snapshot's restore.
+   */
+  ownInertia(): void {
+    if (this.ownsInertia) return;
+    const k = this.D.k;
+    const inertia = bodySlab.take(k);
+    const invInertia = bodySlab.take(k);
+    inertia.set(this.inertia);
+    invInertia.set(this.invInertia);
+    const self = this as unknown as { inertia: Float64Array; invInertia: Float64Array };
+    self.inertia = inertia;
+    self.invInertia = invInertia;
+    this.ownsInertia = true;
   }
 
   private fillInverseInertia(): void {
@@ -980,13 +1070,13 @@ export class Body {
     checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
     checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
     const torque = scratchFor(this.D).bivector;
-    if (!wedgeSumFinite(this.D, torque, this.tView, r, f)) {
+    if (!wedgeSumFinite(this.D, torque, this.torque, r, f)) {
       throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
     }
     const maxT = inputLimits.maxTorque;
     for (let p = 0; p < this.D.k; p += 1) {
       const a = Math.abs(torque[p]!);
-      if (!(a <= maxT || a <= Math.abs(this.tView[p]!))) {
+      if (!(a <= maxT || a <= Math.abs(this.torque[p]!))) {
         throw new RangeError(
           `${fn}: arguments 'f' and 'r' would make ${this.label}'s torque[${p}] ${torque[p]}, beyond ±${formatBound(maxT)} N·m (Body.limits); nothing was changed`,
         );
@@ -994,7 +1084,7 @@ export class Body {
     }
     this.checkAngularAcceleration(fn, "arguments 'f' and 'r'", torque);
     for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
-    this.tView.set(torque);
+    this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -1006,11 +1096,11 @@ export class Body {
     checkBivector(this.D, 't', t, fn);
     checkComponents(fn, "argument 't'", t, inputLimits.maxTorque, 'N·m');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 't', this.label, 'torque', this.tView, t, 1, inputLimits.maxTorque, 'N·m');
+    checkSumBounded(fn, 't', this.label, 'torque', this.torque, t, 1, inputLimits.maxTorque, 'N·m');
     const torque = scratchFor(this.D).bivector;
-    for (let p = 0; p < this.D.k; p += 1) torque[p] = this.tView[p]! + t[p]!;
+    for (let p = 0; p < this.D.k; p += 1) torque[p] = this.torque[p]! + t[p]!;
     this.checkAngularAcceleration(fn, "argument 't'", torque);
-    this.tView.set(torque);
+    this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
     return this;
@@ -1126,6 +1216,7 @@ export class Body {
       this.motion = MOTION_STATIC;
       this.massValue = 0;
       this.invMass = 0;
+      this.ownInertia();
       this.inertia.fill(0);
       this.fillInverseInertia();
       this.vView.fill(0);
@@ -1153,6 +1244,7 @@ export class Body {
     if (this.motion === MOTION_STATIC) this.motion = MOTION_DYNAMIC;
     this.massValue = m;
     this.invMass = this.motion === MOTION_DYNAMIC ? 1 / m : 0;
+    this.ownInertia();
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
     this.lView.set(L);
@@ -1173,7 +1265,7 @@ export class Body {
     let next = 0;
     for (let p = 0; p < this.D.k; p += 1) next = Math.max(next, Math.abs(scratch.omega[p]!));
     if (next <= max) return;
-    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.tView, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.torque, scratch.tmp);
     let now = 0;
     for (let p = 0; p < this.D.k; p += 1) now = Math.max(now, Math.abs(scratch.alpha[p]!));
     if (next <= now) return;
@@ -1186,10 +1278,17 @@ export class Body {
   clearForces(): void {
     this.fView.fill(0);
     if (this.hasTorque) {
-      this.tView.fill(0);
+      this.torque.fill(0);
       this.hasTorque = false;
     }
   }
+}
+
+/** The inverse inertia of a dynamic body of principal inertia `I` (as fillInverseInertia writes it). */
+function inverseOf(I: Float64Array): Float64Array {
+  const inv = new Float64Array(I.length);
+  for (let p = 0; p < I.length; p += 1) inv[p] = I[p]! > 0 ? 1 / I[p]! : 0;
+  return inv;
 }
 
 function checkListener(fn: string, type: unknown, listener: unknown): void {
@@ -1198,9 +1297,7 @@ function checkListener(fn: string, type: unknown, listener: unknown): void {
 }
 
 function checkMaterial(material: unknown, fn: string): Material {
-  if (material === undefined) {
-    return Object.freeze({ friction: bodyDefaults.friction, restitution: bodyDefaults.restitution });
-  }
+  if (material === undefined) return DEFAULT_MATERIAL;
   if (material === null || typeof material !== 'object') {
     throw new TypeError(
       `${fn}: option 'material' must be an object { friction, restitution }, got ${material === null ? 'null' : typeof material}`,

@@ -55,6 +55,10 @@ import { defaultParams, mergeParams, scaledParams } from './params.js';
 import { checkComponents, inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
 import type { WorldParts } from './snapshot/world-parts.js';
+import { Float64Slab, slabPose } from './slab.js';
+
+/** Where the poses of bodies joining a world are cut from (see slab.ts: one buffer per pose cost more than the rest of addBody). */
+const poseSlab = new Float64Slab();
 
 /** What a world holds and what its last sub-step did, counted ({@link WorldBase.stats}). */
 export interface WorldStats {
@@ -583,7 +587,7 @@ export class WorldBase {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) already belongs to another world; remove it there first`);
     }
     // Bounds first: a body so far out that its box overflows is refused before anything changes.
-    if (body.pose === null || body.pose.x.length !== this.n) body.pose = createPose(this.n);
+    if (body.pose === null || body.pose.x.length !== this.n) body.pose = slabPose(poseSlab, this.n);
     this.updatePose(body);
     const sc = this.scratch;
     const isHalfSpace = body.shape.kind === 'halfspace';
@@ -982,9 +986,15 @@ export class WorldBase {
   /** pose.x = body.x, pose.M = the matrix of body.R. */
   private updatePose(body: Body): void {
     const pose = body.pose!;
-    pose.x.set(body.x);
+    // A loop, not pose.x.set(): a builtin call costs more than copying n numbers.
+    const px = pose.x;
+    const x = body.x;
+    for (let i = 0; i < px.length; i += 1) px[i] = x[i]!;
     this.D.kernels.toMatrix(pose.M, body.R);
-    const ids = this.partProxies[body.proxyId];
+    // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
+    const id = body.proxyId;
+    if (id < 0) return;
+    const ids = this.partProxies[id];
     if (ids !== undefined && ids !== null) this.updatePartPoses(body, ids);
   }
 

@@ -11,6 +11,8 @@
  */
 
 const NULL = -1;
+/** The user id of a leaf marked to leave at the next rebuild (user ids are >= 0). */
+const DEAD = -2;
 
 /**
  * The (n−1)-dimensional measure of the boundary of a box with extents e: 2·Σ_k Π_{j≠k} e_j
@@ -25,6 +27,8 @@ export function surfaceMeasure(extents: ArrayLike<number>, n: number): number {
   }
   return 2 * sum;
 }
+
+import { TreeBuilder } from './broadphase-tree-build.js';
 
 /** A dynamic AABB tree over n-dimensional boxes; leaves carry an integer user id. */
 export class DynamicAabbTree {
@@ -56,10 +60,16 @@ export class DynamicAabbTree {
   private capacity: number;
   private freeList = NULL;
   private nodeCount = 0;
+  /** Leaves linked into the tree (a leaf made by createLeaf counts once it is linked). */
+  private linkedLeaves = 0;
   private stack: Int32Array;
   private readonly prefix: Float64Array;
   private readonly extents: Float64Array;
   private readonly measure = new Float64Array(6);
+  /** The top-down build of {@link rebuild}, made by its first call. */
+  private builder: TreeBuilder | null = null;
+  /** The leaves a rebuild links (grown by it). */
+  private leafScratch = new Int32Array(0);
 
   /** An empty tree for n dimensions with room for `initialCapacity` nodes (it grows by doubling). */
   constructor(n: number, initialCapacity = 16) {
@@ -106,6 +116,90 @@ export class DynamicAabbTree {
     this.height[leaf] = 0;
     this.insertLeaf(leaf);
     return leaf;
+  }
+
+  /**
+   * Makes a leaf for `user` with box [min, max) read as in {@link insert}, outside the tree: put
+   * it in with {@link linkLeaf} or {@link rebuild}. Returns the leaf's node index.
+   */
+  createLeaf(user: number, min: Float64Array, max: Float64Array, off: number): number {
+    const leaf = this.allocateNode();
+    this.setLeafBox(leaf, min, max, off);
+    this.userId[leaf] = user;
+    return leaf;
+  }
+
+  /** Gives a leaf that is not in the tree yet (see {@link createLeaf}) a new box. */
+  setLeafBox(leaf: number, min: Float64Array, max: Float64Array, off: number): void {
+    const n = this.n;
+    const b = leaf * n;
+    for (let k = 0; k < n; k += 1) {
+      this.nodeMin[b + k] = min[off + k]!;
+      this.nodeMax[b + k] = max[off + k]!;
+    }
+  }
+
+  /** Puts a leaf made by {@link createLeaf} into the tree (the incremental insertion). */
+  linkLeaf(leaf: number): void {
+    this.insertLeaf(leaf);
+  }
+
+  /** Frees a leaf made by {@link createLeaf} that was never put into the tree. */
+  dropLeaf(leaf: number): void {
+    this.freeNode(leaf);
+  }
+
+  /** Count of leaves in the tree (those made by createLeaf and not yet linked are not counted). */
+  get leafCount(): number {
+    return this.linkedLeaves;
+  }
+
+  /**
+   * Marks a leaf of the tree to leave it at the next {@link rebuild} (which frees it). Until then
+   * the tree must not be queried: the leaf is still in it.
+   */
+  markDead(leaf: number): void {
+    this.userId[leaf] = DEAD;
+  }
+
+  /**
+   * Builds the tree again, top-down, over its leaves and the new leaves `extra[0 .. count)` (made
+   * by {@link createLeaf}); leaves marked by {@link markDead} are freed. The inner nodes are freed
+   * and made anew, the other leaves keep their node indices. For many new or dead leaves at once,
+   * where one insertion or removal each would cost more and give a worse tree (see
+   * broadphase-tree-build.ts).
+   */
+  rebuild(extra: Int32Array, count: number): void {
+    const total = this.linkedLeaves + count;
+    if (this.leafScratch.length < total) this.leafScratch = new Int32Array(Math.max(total, 2 * this.leafScratch.length));
+    const leaves = this.leafScratch;
+    let m = 0;
+    if (this.root !== NULL) {
+      let top = 0;
+      this.stack[top++] = this.root;
+      while (top > 0) {
+        const node = this.stack[--top]!;
+        if (this.height[node] === 0) {
+          if (this.userId[node] === DEAD) this.freeNode(node);
+          else leaves[m++] = node;
+          continue;
+        }
+        if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
+        this.stack[top++] = this.child1[node]!;
+        this.stack[top++] = this.child2[node]!;
+        this.freeNode(node);
+      }
+    }
+    for (let i = 0; i < count; i += 1) leaves[m++] = extra[i]!;
+    this.reserveNodes(m - 1);
+    this.builder ??= new TreeBuilder(this.n);
+    this.root = this.builder.build(this, leaves, m);
+    this.linkedLeaves = m;
+  }
+
+  /** @internal Makes sure `extra` more nodes can be allocated without the arrays growing. */
+  reserveNodes(extra: number): void {
+    while (this.capacity - this.nodeCount < extra) this.growNodes();
   }
 
   /** Removes a leaf and frees its node. */
@@ -242,7 +336,8 @@ export class DynamicAabbTree {
     this.freeList = from;
   }
 
-  private allocateNode(): number {
+  /** @internal A free node (grows the arrays when none is left), reset to an unlinked leaf. */
+  allocateNode(): number {
     if (this.freeList === NULL) this.growNodes();
     const node = this.freeList;
     this.freeList = this.parent[node]!;
@@ -319,6 +414,7 @@ export class DynamicAabbTree {
   }
 
   private insertLeaf(leaf: number): void {
+    this.linkedLeaves += 1;
     if (this.root === NULL) {
       this.root = leaf;
       this.parent[leaf] = NULL;
@@ -365,6 +461,7 @@ export class DynamicAabbTree {
   }
 
   private removeLeaf(leaf: number): void {
+    this.linkedLeaves -= 1;
     if (leaf === this.root) {
       this.root = NULL;
       return;

@@ -37,9 +37,10 @@ export function reserveStepSnapshot(snap: StepSnapshot, count: number): void {
 export function saveBodyState(snap: StepSnapshot, body: Body): void {
   const data = snap.data;
   const stride = snap.stride;
-  const view = body.stateView;
+  const record = body.storage;
+  const at = body.storageOffset;
   const base = body.worldIndex * stride;
-  for (let i = 0; i < stride; i += 1) data[base + i] = view[i]!;
+  for (let i = 0; i < stride; i += 1) data[base + i] = record[at + i]!;
 }
 
 /** Puts bodies[0 .. count) back to the states saved by {@link saveBodyState}. */
@@ -47,9 +48,10 @@ export function restoreBodyStates(snap: StepSnapshot, bodies: readonly Body[], c
   const data = snap.data;
   const stride = snap.stride;
   for (let b = 0; b < count; b += 1) {
-    const view = bodies[b]!.stateView;
+    const record = bodies[b]!.storage;
+    const at = bodies[b]!.storageOffset;
     const base = bodies[b]!.worldIndex * stride;
-    for (let i = 0; i < stride; i += 1) view[i] = data[base + i]!;
+    for (let i = 0; i < stride; i += 1) record[at + i] = data[base + i]!;
   }
 }
 
@@ -58,9 +60,12 @@ export function restoreBodyStates(snap: StepSnapshot, bodies: readonly Body[], c
  * when all are finite and NaN as soon as one is not (no false alarm from overflow of the sum).
  */
 export function isStateFinite(body: Body): boolean {
-  const s = body.stateView;
+  const s = body.storage;
+  const at = body.storageOffset;
+  const D = body.D;
+  const end = at + 2 * D.n + D.r + 2 * D.k; // Body.stateLength
   let acc = 0;
-  for (let i = 0; i < s.length; i += 1) acc += s[i]! * 0;
+  for (let i = at; i < end; i += 1) acc += s[i]! * 0;
   return acc === 0;
 }
 

@@ -115,6 +115,7 @@ export function readBody(r: SnapshotReader, D: Dims, shapes: readonly Shape[]): 
   if (comOffset !== null) body.comOffset!.set(comOffset);
   body.massValue = mass;
   body.invMass = invMass;
+  body.ownInertia(); // (its arrays may be shared with bodies of the same shape and mass)
   body.inertia.set(inertia);
   body.invInertia.set(invInertia);
   body.boundingRadius = boundingRadius;

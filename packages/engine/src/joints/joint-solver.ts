@@ -169,6 +169,13 @@ export class JointSolver {
   prepRows = 0;
   /** @internal 1 while the rebuilt rows match the prepared ones (rowTarget applies). */
   layoutOk = 1;
+  /**
+   * @internal 1 while the position projection rebuilds rows for a chord step: only each row's C,
+   * type and bounds are written, not its direction and Jacobians. A chord step reuses the tree's
+   * factorisation and reads nothing of a row but C, so writing the Jacobians there is wasted work
+   * (about half of building a point row); a pass that factors again rebuilds its rows in full.
+   */
+  errorsOnly = 0;
   private rowKind = new Int32Array(16);
   /** @internal Per row: its key in `Joint.lambda`. */
   rowKey = new Int32Array(16);
@@ -349,7 +356,9 @@ export class JointSolver {
     const base = row * RS;
     const ja = base + this.OFF_JA;
     const jb = base + this.OFF_JB;
-    if (linear === 1) {
+    if (this.errorsOnly === 1) {
+      // A chord step of the position projection reads only C (see `errorsOnly`).
+    } else if (linear === 1) {
       const dir = this.dir;
       const rA = this.armA;
       const rB = this.armB;
@@ -777,17 +786,9 @@ export class JointSolver {
     let late = 0;
     let before = Infinity;
     for (let it = 0; it < most; it += 1) {
-      // Rows from the current poses (the impulses were stored already).
-      this.rowCount = 0;
-      this.factorSize = 0;
-      for (let j = 0; j < this.count; j += 1) {
-        this.jFirst[j] = this.rowCount;
-        this.jBlock[j] = 0;
-        this.jRows[j] = 0;
-        if (this.joints[j].brokenFlag) continue;
-        this.joints[j].buildRows(this, j);
-      }
-      this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+      // Rows from the current poses (the impulses were stored already); after a factorisation,
+      // C alone, for a chord step (a pass that factors again rebuilds them in full, below).
+      this.buildProjectionRows(factored);
       const residual = this.rigidResidual();
       // An error at the level of rounding ends the projection at once.
       if (residual <= FINE_RESIDUAL) break;
@@ -805,7 +806,7 @@ export class JointSolver {
       if (reuse) {
         this.tree.solvePositions(this, sb);
         chord = 1;
-      } else if (this.tree.build(this, sb) > 0) {
+      } else if ((this.errorsOnly === 1 ? this.buildProjectionRows(0) : 0) === 0 && this.tree.build(this, sb) > 0) {
         // The tree is factored at the current poses (with the Jacobians of the start of the
         // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
         this.tree.stiffness = this.sc[SC_H];
@@ -820,16 +821,39 @@ export class JointSolver {
         factored = 0;
         chord = 0;
       }
+      // The Gauss–Seidel joints build their own rows, in full.
+      this.errorsOnly = 0;
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
       }
     }
+    this.errorsOnly = 0;
     for (let j = 0; j < this.count; j += 1) {
       const joint = this.joints[j];
       if (joint.a.motion === MOTION_DYNAMIC) joint.a.omegaFromMomentum();
       if (joint.b !== null && joint.b.motion === MOTION_DYNAMIC) joint.b.omegaFromMomentum();
     }
     this.projectVelocities(sb);
+  }
+
+  /**
+   * Rebuilds the rows of every joint from the current poses for a pass of the position
+   * projection: in full (`errorsOnly` 0), or only their C (1: a chord step reads nothing else).
+   * Leaves `errorsOnly` as asked, and returns 0.
+   */
+  private buildProjectionRows(errorsOnly: number): number {
+    this.errorsOnly = errorsOnly;
+    this.rowCount = 0;
+    this.factorSize = 0;
+    for (let j = 0; j < this.count; j += 1) {
+      this.jFirst[j] = this.rowCount;
+      this.jBlock[j] = 0;
+      this.jRows[j] = 0;
+      if (this.joints[j].brokenFlag) continue;
+      this.joints[j].buildRows(this, j);
+    }
+    this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+    return 0;
   }
 
   /** Records the row layout the tree was factored with (`sameLayout` compares against it). */
@@ -1195,6 +1219,14 @@ export class JointSolver {
       this.D.kernels.mul(Q, this.RJB, this.T);
     }
     if (Q[0] < 0) for (let c = 0; c < r; c += 1) Q[c] = -Q[c];
+    if (this.errorsOnly === 1) {
+      // A chord step reads only C: the gradient is not needed (see `errorsOnly`).
+      for (let i = 0; i < planes.length; i += 1) {
+        this.sc[SC_C] = -2 * Q[1 + planes[i]];
+        this.addRow(j, key0 + i, KIND_ANGULAR, ROW_EQUAL, 0);
+      }
+      return;
+    }
     const G = this.G;
     const gA = this.gA;
     G.fill(0);

@@ -1174,13 +1174,43 @@ export class JointSolver {
    * C = pB − pA along each world axis.
    */
   pointRows(j: number, key0: number): void {
-    const n = this.n;
-    const dir = this.dir;
+    const { n, k, RS } = this;
+    const planeI = this.D.planeI;
+    const planeJ = this.D.planeJ;
+    const rA = this.armA;
+    const rB = this.armB;
+    const full = this.errorsOnly === 0;
+    // `addRow` with dir = e_d, written out: the same products and differences (so the same
+    // numbers, signed zeros included), without filling a direction and a call per row.
     for (let d = 0; d < n; d += 1) {
-      dir.fill(0);
-      dir[d] = 1;
-      this.sc[SC_C] = this.pB[d] - this.pA[d];
-      this.addRow(j, key0 + d, KIND_LINEAR, ROW_EQUAL, 1);
+      const row = this.rowCount;
+      this.ensureRows(row + 1);
+      this.rowCount = row + 1;
+      this.jRows[j] += 1;
+      this.jBlock[j] += 1;
+      this.rowKind[row] = KIND_LINEAR;
+      this.rowKey[row] = key0 + d;
+      const rows = this.rows;
+      const base = row * RS;
+      if (full) {
+        const ja = base + this.OFF_JA;
+        const jb = base + this.OFF_JB;
+        for (let e = 0; e < n; e += 1) rows[base + e] = e === d ? 1 : 0;
+        for (let pl = 0; pl < k; pl += 1) {
+          const pi = planeI[pl];
+          const pj = planeJ[pl];
+          const di = pi === d ? 1 : 0;
+          const dj = pj === d ? 1 : 0;
+          rows[ja + pl] = rA[pi] * dj - rA[pj] * di;
+          rows[jb + pl] = rB[pi] * dj - rB[pj] * di;
+        }
+      }
+      const S = base + this.OFF_S;
+      rows[S + 6] = this.pB[d] - this.pA[d];
+      rows[S + 7] = ROW_EQUAL;
+      rows[S + 4] = 0;
+      rows[S + 5] = 0;
+      rows[S + 1] = 0;
     }
   }
 

@@ -810,7 +810,7 @@ export class JointSolver {
         // The tree is factored at the current poses (with the Jacobians of the start of the
         // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
         this.tree.stiffness = this.sc[SC_H];
-        this.tree.factor(this, sb);
+        this.tree.factor(this, sb, 0);
         this.tree.stiffness = 0;
         this.tree.solvePositions(this, sb);
         this.saveLayout();

@@ -507,11 +507,19 @@ export class JointTree {
 
   /**
    * Factors the forest: for each node, leaves first, D_i = H_ii − Σ_children H_ic W_c (done as the
-   * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip.
+   * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip. With `keep` 1 (the
+   * default) a factorisation of the same input, bit for bit, is kept (see `sameInput`); 0 factors
+   * without comparing or recording.
    */
-  factor(js: JointSolver, sb: SolverBodies): void {
+  factor(js: JointSolver, sb: SolverBodies, keep = 1): void {
     this.savedOk = 0;
-    if (this.sameInput(js, sb) === 1) return;
+    if (keep === 0) {
+      // The caller knows the input is new (the position projection, at poses just moved): the
+      // blocks go straight into `mat`, and nothing is recorded, so the next `factor` compares
+      // against no input and factors (factoring the same input again gives the same bits).
+      this.assemble(js, sb, this.mat);
+      this.lastOk = 0;
+    } else if (this.sameInput(js, sb) === 1) return;
     const mat = this.mat;
     let maxSize = 0;
     for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];

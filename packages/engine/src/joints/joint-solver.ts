@@ -308,7 +308,9 @@ export class JointSolver {
       this.finishJoint(sb, j, warm);
     }
     this.prepRows = this.rowCount;
-    if (this.count > 0 && this.tree.build(this, sb) > 0) {
+    const inTree = this.count > 0 ? this.tree.build(this, sb) : 0;
+    this.factorBlocks(sb);
+    if (inTree > 0) {
       this.tree.stiffness = h;
       this.tree.factor(this, sb);
       this.tree.stiffness = 0;
@@ -399,10 +401,6 @@ export class JointSolver {
     const count = this.jRows[j];
     const rows = this.rows;
     this.rowMasses(sb, j);
-    const f0 = this.factorSize;
-    this.jFactor[j] = f0;
-    this.factorBlock(j, f0);
-    this.factorSize = f0 + this.jBlock[j] * this.jBlock[j];
     // Softness of this joint in this sub-step.
     const joint = this.joints[j];
     const st = joint.state;
@@ -474,6 +472,23 @@ export class JointSolver {
         if (l0 > rows[S + 5]) l0 = rows[S + 5];
       }
       this.lambdaRow[q] = l0;
+    }
+  }
+
+  /**
+   * The Cholesky factor of the block of every joint the tree does not solve (after `tree.build`):
+   * only the Gauss–Seidel passes read a block's factor, so the tree's joints skip it.
+   */
+  private factorBlocks(sb: SolverBodies): void {
+    this.factorSize = 0;
+    const im = sb.invMass;
+    for (let j = 0; j < this.count; j += 1) {
+      if (this.tree.role[j] !== 0) continue;
+      const m = this.jBlock[j];
+      this.blockMass = im[this.jA[j]] + im[this.jB[j]];
+      this.jFactor[j] = this.factorSize;
+      this.factorBlock(j, this.factorSize);
+      this.factorSize += m * m;
     }
   }
 
@@ -923,10 +938,6 @@ export class JointSolver {
       // Scalar rows (motor, limits) take no part.
       this.rowCount = this.jFirst[j] + this.jBlock[j];
       this.jRows[j] = this.jBlock[j];
-      this.rowMasses(sb, j);
-      this.jFactor[j] = this.factorSize;
-      this.factorBlock(j, this.factorSize);
-      this.factorSize += this.jBlock[j] * this.jBlock[j];
       for (let q = this.jFirst[j]; q < this.rowCount; q += 1) {
         const S = q * this.RS + this.OFF_S;
         this.rows[S + 1] = 0;
@@ -935,7 +946,11 @@ export class JointSolver {
         this.lambdaRow[q] = 0;
       }
     }
-    if (this.tree.build(this, sb) > 0) {
+    const inTree = this.tree.build(this, sb);
+    // The joints outside the tree: I⁻¹J and their block factors (the tree needs neither).
+    for (let j = 0; j < this.count; j += 1) if (this.tree.role[j] === 0 && this.jRows[j] > 0) this.rowMasses(sb, j);
+    this.factorBlocks(sb);
+    if (inTree > 0) {
       this.tree.stiffness = this.sc[SC_H];
       this.tree.factor(this, sb);
       this.tree.stiffness = 0;

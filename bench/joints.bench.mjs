@@ -30,6 +30,9 @@
 // last table); 1 if a peer or the built engine cannot be loaded, or a scene throws.
 //
 // Run: node bench/joints.bench.mjs    (after the build: it imports the BUILT packages)
+// Env: JOINTS_BENCH_SCENES=<comma-separated list of chain10 whip, chain10 hang, grid20, 4D> runs only
+// those groups (e.g. `JOINTS_BENCH_SCENES=grid20 node --cpu-prof bench/joints.bench.mjs` to profile
+// one scene); the ratio and target tables then list only what ran.
 import { medianTable } from './lib/table.mjs';
 import { runRoundsInTurns } from './lib/turns.mjs';
 import { loadCannon, loadRapier } from './scenes/peer-scenes.mjs';
@@ -225,6 +228,10 @@ const fourD = [
   },
 ];
 
+/** The scene groups to run (JOINTS_BENCH_SCENES, see the header); all when unset. */
+const ONLY = process.env.JOINTS_BENCH_SCENES?.split(',').map((x) => x.trim());
+const wanted = (scene) => ONLY === undefined || ONLY.includes(scene);
+
 const results = {};
 const row = (r, x) => ({
   scene: r.scene,
@@ -244,7 +251,8 @@ const row = (r, x) => ({
 // PhysiN runs in turns with one peer at a time (bench/lib/turns.mjs): first its rows with Rapier,
 // then PhysiN again with cannon-es; each time ratio comes from the pair that shared the clock.
 const rows3 = [];
-for (const scene of ['chain10 whip', 'chain10 hang', 'grid20']) {
+const scenes3 = ['chain10 whip', 'chain10 hang', 'grid20'].filter(wanted);
+for (const scene of scenes3) {
   const mine = runs.filter((r) => r.scene === scene && r.engine.startsWith('PhysiN'));
   const peer = (name) => runs.find((r) => r.scene === scene && r.engine === name);
   const withRapier = [...mine, peer('Rapier')];
@@ -267,7 +275,7 @@ medianTable(
 const ratio = (a, b) => (Number.isFinite(a) && Number.isFinite(b) && b > 0 ? a / b : NaN);
 medianTable(
   '3D joint scenes: ratios of the median ms/step (below 1: PhysiN faster) and of the worst joint error (below 1: PhysiN more accurate)',
-  ['chain10 whip', 'chain10 hang', 'grid20'].map((scene) => {
+  scenes3.map((scene) => {
     const p = results[`${scene}|PhysiN`];
     const p2 = results[`${scene}|PhysiN (2)`];
     const ra = results[`${scene}|Rapier`];
@@ -284,8 +292,10 @@ medianTable(
 
 // The 4D chains in turns with the same 3D chains, for the "time vs 3D" column.
 const rows4 = [];
-const pairs4 = fourD.map((r) => [r, runs.find((q) => q.scene === r.scene.replace(' 4D', '') && q.engine === r.engine)]);
-const done4 = runTogether(pairs4.flat());
+const pairs4 = fourD
+  .filter(() => wanted('4D'))
+  .map((r) => [r, runs.find((q) => q.scene === r.scene.replace(' 4D', '') && q.engine === r.engine)]);
+const done4 = pairs4.length > 0 ? runTogether(pairs4.flat()) : [];
 pairs4.forEach(([r], i) => {
   const x = done4[2 * i];
   const same3 = done4[2 * i + 1];
@@ -300,6 +310,13 @@ medianTable(
 );
 
 // ---- Targets ----------------------------------------------------------------------------------
+if (!wanted('chain10 whip')) {
+  if (failures > 0) {
+    console.error(`\njoints.bench: ${failures} run(s) threw (see above)`);
+    process.exit(1);
+  }
+  process.exit(0);
+}
 const yesNo = (ok) => (ok ? 'yes' : 'NO');
 const whip = results['chain10 whip|PhysiN'].worst;
 const fmt = (x) => (Number.isFinite(x) ? x.toPrecision(3) : String(x));

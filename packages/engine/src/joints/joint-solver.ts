@@ -169,6 +169,13 @@ export class JointSolver {
   prepRows = 0;
   /** @internal 1 while the rebuilt rows match the prepared ones (rowTarget applies). */
   layoutOk = 1;
+  /**
+   * @internal 1 while the position projection rebuilds rows for a chord step: only each row's C,
+   * type and bounds are written, not its direction and Jacobians. A chord step reuses the tree's
+   * factorisation and reads nothing of a row but C, so writing the Jacobians there is wasted work
+   * (about half of building a point row); a pass that factors again rebuilds its rows in full.
+   */
+  errorsOnly = 0;
   private rowKind = new Int32Array(16);
   /** @internal Per row: its key in `Joint.lambda`. */
   rowKey = new Int32Array(16);
@@ -301,7 +308,9 @@ export class JointSolver {
       this.finishJoint(sb, j, warm);
     }
     this.prepRows = this.rowCount;
-    if (this.count > 0 && this.tree.build(this, sb) > 0) {
+    const inTree = this.count > 0 ? this.tree.build(this, sb) : 0;
+    this.factorBlocks(sb);
+    if (inTree > 0) {
       this.tree.stiffness = h;
       this.tree.factor(this, sb);
       this.tree.stiffness = 0;
@@ -349,7 +358,9 @@ export class JointSolver {
     const base = row * RS;
     const ja = base + this.OFF_JA;
     const jb = base + this.OFF_JB;
-    if (linear === 1) {
+    if (this.errorsOnly === 1) {
+      // A chord step of the position projection reads only C (see `errorsOnly`).
+    } else if (linear === 1) {
       const dir = this.dir;
       const rA = this.armA;
       const rB = this.armB;
@@ -390,10 +401,6 @@ export class JointSolver {
     const count = this.jRows[j];
     const rows = this.rows;
     this.rowMasses(sb, j);
-    const f0 = this.factorSize;
-    this.jFactor[j] = f0;
-    this.factorBlock(j, f0);
-    this.factorSize = f0 + this.jBlock[j] * this.jBlock[j];
     // Softness of this joint in this sub-step.
     const joint = this.joints[j];
     const st = joint.state;
@@ -465,6 +472,23 @@ export class JointSolver {
         if (l0 > rows[S + 5]) l0 = rows[S + 5];
       }
       this.lambdaRow[q] = l0;
+    }
+  }
+
+  /**
+   * The Cholesky factor of the block of every joint the tree does not solve (after `tree.build`):
+   * only the Gauss–Seidel passes read a block's factor, so the tree's joints skip it.
+   */
+  private factorBlocks(sb: SolverBodies): void {
+    this.factorSize = 0;
+    const im = sb.invMass;
+    for (let j = 0; j < this.count; j += 1) {
+      if (this.tree.role[j] !== 0) continue;
+      const m = this.jBlock[j];
+      this.blockMass = im[this.jA[j]] + im[this.jB[j]];
+      this.jFactor[j] = this.factorSize;
+      this.factorBlock(j, this.factorSize);
+      this.factorSize += m * m;
     }
   }
 
@@ -777,17 +801,9 @@ export class JointSolver {
     let late = 0;
     let before = Infinity;
     for (let it = 0; it < most; it += 1) {
-      // Rows from the current poses (the impulses were stored already).
-      this.rowCount = 0;
-      this.factorSize = 0;
-      for (let j = 0; j < this.count; j += 1) {
-        this.jFirst[j] = this.rowCount;
-        this.jBlock[j] = 0;
-        this.jRows[j] = 0;
-        if (this.joints[j].brokenFlag) continue;
-        this.joints[j].buildRows(this, j);
-      }
-      this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+      // Rows from the current poses (the impulses were stored already); after a factorisation,
+      // C alone, for a chord step (a pass that factors again rebuilds them in full, below).
+      this.buildProjectionRows(factored);
       const residual = this.rigidResidual();
       // An error at the level of rounding ends the projection at once.
       if (residual <= FINE_RESIDUAL) break;
@@ -805,11 +821,11 @@ export class JointSolver {
       if (reuse) {
         this.tree.solvePositions(this, sb);
         chord = 1;
-      } else if (this.tree.build(this, sb) > 0) {
+      } else if ((this.errorsOnly === 1 ? this.buildProjectionRows(0) : 0) === 0 && this.tree.build(this, sb) > 0) {
         // The tree is factored at the current poses (with the Jacobians of the start of the
         // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
         this.tree.stiffness = this.sc[SC_H];
-        this.tree.factor(this, sb);
+        this.tree.factor(this, sb, 0);
         this.tree.stiffness = 0;
         this.tree.solvePositions(this, sb);
         this.saveLayout();
@@ -820,16 +836,39 @@ export class JointSolver {
         factored = 0;
         chord = 0;
       }
+      // The Gauss–Seidel joints build their own rows, in full.
+      this.errorsOnly = 0;
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
       }
     }
+    this.errorsOnly = 0;
     for (let j = 0; j < this.count; j += 1) {
       const joint = this.joints[j];
       if (joint.a.motion === MOTION_DYNAMIC) joint.a.omegaFromMomentum();
       if (joint.b !== null && joint.b.motion === MOTION_DYNAMIC) joint.b.omegaFromMomentum();
     }
     this.projectVelocities(sb);
+  }
+
+  /**
+   * Rebuilds the rows of every joint from the current poses for a pass of the position
+   * projection: in full (`errorsOnly` 0), or only their C (1: a chord step reads nothing else).
+   * Leaves `errorsOnly` as asked, and returns 0.
+   */
+  private buildProjectionRows(errorsOnly: number): number {
+    this.errorsOnly = errorsOnly;
+    this.rowCount = 0;
+    this.factorSize = 0;
+    for (let j = 0; j < this.count; j += 1) {
+      this.jFirst[j] = this.rowCount;
+      this.jBlock[j] = 0;
+      this.jRows[j] = 0;
+      if (this.joints[j].brokenFlag) continue;
+      this.joints[j].buildRows(this, j);
+    }
+    this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
+    return 0;
   }
 
   /** Records the row layout the tree was factored with (`sameLayout` compares against it). */
@@ -899,10 +938,6 @@ export class JointSolver {
       // Scalar rows (motor, limits) take no part.
       this.rowCount = this.jFirst[j] + this.jBlock[j];
       this.jRows[j] = this.jBlock[j];
-      this.rowMasses(sb, j);
-      this.jFactor[j] = this.factorSize;
-      this.factorBlock(j, this.factorSize);
-      this.factorSize += this.jBlock[j] * this.jBlock[j];
       for (let q = this.jFirst[j]; q < this.rowCount; q += 1) {
         const S = q * this.RS + this.OFF_S;
         this.rows[S + 1] = 0;
@@ -911,7 +946,11 @@ export class JointSolver {
         this.lambdaRow[q] = 0;
       }
     }
-    if (this.tree.build(this, sb) > 0) {
+    const inTree = this.tree.build(this, sb);
+    // The joints outside the tree: I⁻¹J and their block factors (the tree needs neither).
+    for (let j = 0; j < this.count; j += 1) if (this.tree.role[j] === 0 && this.jRows[j] > 0) this.rowMasses(sb, j);
+    this.factorBlocks(sb);
+    if (inTree > 0) {
       this.tree.stiffness = this.sc[SC_H];
       this.tree.factor(this, sb);
       this.tree.stiffness = 0;
@@ -1150,13 +1189,43 @@ export class JointSolver {
    * C = pB − pA along each world axis.
    */
   pointRows(j: number, key0: number): void {
-    const n = this.n;
-    const dir = this.dir;
+    const { n, k, RS } = this;
+    const planeI = this.D.planeI;
+    const planeJ = this.D.planeJ;
+    const rA = this.armA;
+    const rB = this.armB;
+    const full = this.errorsOnly === 0;
+    // `addRow` with dir = e_d, written out: the same products and differences (so the same
+    // numbers, signed zeros included), without filling a direction and a call per row.
     for (let d = 0; d < n; d += 1) {
-      dir.fill(0);
-      dir[d] = 1;
-      this.sc[SC_C] = this.pB[d] - this.pA[d];
-      this.addRow(j, key0 + d, KIND_LINEAR, ROW_EQUAL, 1);
+      const row = this.rowCount;
+      this.ensureRows(row + 1);
+      this.rowCount = row + 1;
+      this.jRows[j] += 1;
+      this.jBlock[j] += 1;
+      this.rowKind[row] = KIND_LINEAR;
+      this.rowKey[row] = key0 + d;
+      const rows = this.rows;
+      const base = row * RS;
+      if (full) {
+        const ja = base + this.OFF_JA;
+        const jb = base + this.OFF_JB;
+        for (let e = 0; e < n; e += 1) rows[base + e] = e === d ? 1 : 0;
+        for (let pl = 0; pl < k; pl += 1) {
+          const pi = planeI[pl];
+          const pj = planeJ[pl];
+          const di = pi === d ? 1 : 0;
+          const dj = pj === d ? 1 : 0;
+          rows[ja + pl] = rA[pi] * dj - rA[pj] * di;
+          rows[jb + pl] = rB[pi] * dj - rB[pj] * di;
+        }
+      }
+      const S = base + this.OFF_S;
+      rows[S + 6] = this.pB[d] - this.pA[d];
+      rows[S + 7] = ROW_EQUAL;
+      rows[S + 4] = 0;
+      rows[S + 5] = 0;
+      rows[S + 1] = 0;
     }
   }
 
@@ -1195,6 +1264,14 @@ export class JointSolver {
       this.D.kernels.mul(Q, this.RJB, this.T);
     }
     if (Q[0] < 0) for (let c = 0; c < r; c += 1) Q[c] = -Q[c];
+    if (this.errorsOnly === 1) {
+      // A chord step reads only C: the gradient is not needed (see `errorsOnly`).
+      for (let i = 0; i < planes.length; i += 1) {
+        this.sc[SC_C] = -2 * Q[1 + planes[i]];
+        this.addRow(j, key0 + i, KIND_ANGULAR, ROW_EQUAL, 0);
+      }
+      return;
+    }
     const G = this.G;
     const gA = this.gA;
     G.fill(0);

@@ -304,6 +304,42 @@ export class JointTree {
   }
 
   /**
+   * The whole coupling block between joint j's rows and the body in `slot` into H (s × sp,
+   * row-major): the entries of `coupling`, written out (the same numbers, without a call and a
+   * branch per entry). `jointIsChild` 1: rows are the joint's rows and columns the body's
+   * unknowns (s = the joint's rows); 0: the transpose (rows the body's unknowns).
+   */
+  private couplingBlock(
+    js: JointSolver,
+    j: number,
+    slot: number,
+    jointIsChild: number,
+    s: number,
+    sp: number,
+    H: Float64Array,
+  ): void {
+    const { n, bs } = this;
+    const rows = js.rows;
+    const RS = js.RS;
+    const first = js.jFirst[j];
+    const isB = js.jB[j] === slot;
+    const sg = isB ? 1 : -1;
+    const offJ = (isB ? js.OFF_JB : js.OFF_JA) - n;
+    // m: the joint's rows; u: the body's unknowns (folded columns beyond bs are 0).
+    const m = jointIsChild === 1 ? s : sp;
+    const u = jointIsChild === 1 ? sp : s;
+    const stepRow = jointIsChild === 1 ? sp : 1;
+    const stepCol = jointIsChild === 1 ? 1 : sp;
+    for (let r = 0; r < m; r += 1) {
+      const base = (first + r) * RS;
+      const at = r * stepRow;
+      for (let c = 0; c < u; c += 1) {
+        H[at + c * stepCol] = c >= bs ? 0 : c < n ? sg * rows[base + c] : sg * rows[base + offJ + c];
+      }
+    }
+  }
+
+  /**
    * The scale of the geometric stiffness added to the angular blocks by the next `factor`: the
    * sub-step h for the velocity passes, the position projection and the velocity projection; 0
    * for none (see docs/joints.md, "Heavy loads: the geometric stiffness").
@@ -471,11 +507,19 @@ export class JointTree {
 
   /**
    * Factors the forest: for each node, leaves first, D_i = H_ii − Σ_children H_ic W_c (done as the
-   * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip.
+   * children finish), its LU with complete pivoting, and W_i = D_i⁻¹ H_ip. With `keep` 1 (the
+   * default) a factorisation of the same input, bit for bit, is kept (see `sameInput`); 0 factors
+   * without comparing or recording.
    */
-  factor(js: JointSolver, sb: SolverBodies): void {
+  factor(js: JointSolver, sb: SolverBodies, keep = 1): void {
     this.savedOk = 0;
-    if (this.sameInput(js, sb) === 1) return;
+    if (keep === 0) {
+      // The caller knows the input is new (the position projection, at poses just moved): the
+      // blocks go straight into `mat`, and nothing is recorded, so the next `factor` compares
+      // against no input and factors (factoring the same input again gives the same bits).
+      this.assemble(js, sb, this.mat);
+      this.lastOk = 0;
+    } else if (this.sameInput(js, sb) === 1) return;
     const mat = this.mat;
     let maxSize = 0;
     for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];
@@ -494,12 +538,9 @@ export class JointTree {
       const j = jointIsChild ? this.nRef[i] : this.nRef[p];
       const slot = jointIsChild ? this.nRef[p] : this.nRef[i];
       // H_ip (s × sp) once, then W_i = D_i⁻¹ H_ip column by column and D_p −= H_ipᵀ W_i.
-      this.hblk = growFloat64(this.hblk, s * sp, 0);
+      if (this.hblk.length < s * sp) this.hblk = growFloat64(this.hblk, s * sp, 0);
       const H = this.hblk;
-      for (let r = 0; r < s; r += 1) {
-        for (let c = 0; c < sp; c += 1)
-          H[r * sp + c] = jointIsChild ? this.coupling(js, j, slot, r, c) : this.coupling(js, j, slot, c, r);
-      }
+      this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
       for (let c = 0; c < sp; c += 1) {
         for (let r = 0; r < s; r += 1) col[r] = H[r * sp + c];
         this.luSolve(this.nD[i], s, this.nPiv[i], col, 0);

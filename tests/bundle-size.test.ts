@@ -37,11 +37,14 @@ interface Built {
  * must be paid for by a feature and argued in the commit.
  */
 const BUDGET: Record<string, number> = {
-  boxes: 48_400,
-  'boxes-3d': 44_900,
-  'boxes-hinge': 59_900,
-  'boxes-ray': 50_700,
-  'boxes-tori': 55_600,
+  // Raised for issue 19 (building a world of 32,000 bodies): the broadphase's batch build and
+  // self-walk, the slabs and the shared inertia cost 1.1-2.1 kB gzip a scene (measured: boxes
+  // 49,681, boxes-3d 46,243, hinge 61,979, ray 51,894, tori 56,722).
+  boxes: 50_700,
+  'boxes-3d': 47_200,
+  'boxes-hinge': 63_200,
+  'boxes-ray': 52_900,
+  'boxes-tori': 57_900,
   rotor3: 2_000,
 };
 

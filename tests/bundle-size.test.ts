@@ -37,11 +37,14 @@ interface Built {
  * must be paid for by a feature and argued in the commit.
  */
 const BUDGET: Record<string, number> = {
-  boxes: 48_700,
-  'boxes-3d': 40_900,
-  'boxes-hinge': 61_200,
-  'boxes-ray': 51_000,
-  'boxes-tori': 56_000,
+  // Issue 19's batch build of the broadphase, its self-walk, the slabs and the shared inertia
+  // cost 1.1-2.1 kB gzip a scene; the 3D entry's own solver and SAT saved 3.9 kB of its world.
+  // Measured together (kB): boxes 48.9, boxes-3d 41.5, hinge 61.3, ray 51.1, tori 55.9.
+  boxes: 51_100,
+  'boxes-3d': 43_400,
+  'boxes-hinge': 64_000,
+  'boxes-ray': 53_400,
+  'boxes-tori': 58_400,
   rotor3: 2_000,
 };
 

@@ -821,19 +821,22 @@ export class JointSolver {
       if (reuse) {
         this.tree.solvePositions(this, sb);
         chord = 1;
-      } else if ((this.errorsOnly === 1 ? this.buildProjectionRows(0) : 0) === 0 && this.tree.build(this, sb) > 0) {
-        // The tree is factored at the current poses (with the Jacobians of the start of the
-        // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
-        this.tree.stiffness = this.sc[SC_H];
-        this.tree.factor(this, sb, 0);
-        this.tree.stiffness = 0;
-        this.tree.solvePositions(this, sb);
-        this.saveLayout();
-        factored = 1;
-        chord = 0;
-        if (it >= iterations) late = 1;
       } else {
-        factored = 0;
+        // A pass that factors again needs its rows in full, not C alone.
+        if (this.errorsOnly === 1) this.buildProjectionRows(0);
+        if (this.tree.build(this, sb) > 0) {
+          // The tree is factored at the current poses (with the Jacobians of the start of the
+          // sub-step, a whipping chain's projection diverges), with the geometric stiffness.
+          this.tree.stiffness = this.sc[SC_H];
+          this.tree.factor(this, sb, 0);
+          this.tree.stiffness = 0;
+          this.tree.solvePositions(this, sb);
+          this.saveLayout();
+          factored = 1;
+          if (it >= iterations) late = 1;
+        } else {
+          factored = 0;
+        }
         chord = 0;
       }
       // The Gauss–Seidel joints build their own rows, in full.
@@ -854,9 +857,9 @@ export class JointSolver {
   /**
    * Rebuilds the rows of every joint from the current poses for a pass of the position
    * projection: in full (`errorsOnly` 0), or only their C (1: a chord step reads nothing else).
-   * Leaves `errorsOnly` as asked, and returns 0.
+   * Leaves `errorsOnly` as asked.
    */
-  private buildProjectionRows(errorsOnly: number): number {
+  private buildProjectionRows(errorsOnly: number): void {
     this.errorsOnly = errorsOnly;
     this.rowCount = 0;
     this.factorSize = 0;
@@ -868,7 +871,6 @@ export class JointSolver {
       this.joints[j].buildRows(this, j);
     }
     this.layoutOk = this.rowCount === this.prepRows ? 1 : 0;
-    return 0;
   }
 
   /** Records the row layout the tree was factored with (`sameLayout` compares against it). */

@@ -19,7 +19,8 @@
  *    kept per pair) applied again;
  * 3. `iterations` Gauss–Seidel passes: per manifold, friction patch then normals;
  * 4. shock propagation (`shockIterations` passes, ground up): in a contact between layers, the
- *    lower body acts as infinitely heavy, so a stack cannot push its base down;
+ *    lower body acts as infinitely heavy, so a stack cannot push its base down; the contacts of
+ *    a body with the layer below are swept together;
  * 5. restitution: touching points that approached faster than `restitutionThreshold` are given
  *    the bounce velocity e·|v_n| (a speculative stop records v_n and bounces one sub-step later).
  *
@@ -47,17 +48,24 @@ const SOLVE_LAMBDA = 4;
 const SOLVE_TOLERANCE = 5;
 /** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
 export const SOLVE_CHANGE = 6;
-/** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
+/**
+ * Inner sweeps over the contacts of one body with the layer below it in a shock pass (at most:
+ * see SOLVE_TOLERANCE).
+ */
 const SHOCK_INNER_SWEEPS = 3;
 /**
  * Layers from the ground (see {@link ContactSolver.shockPropagate}) from which the contacts form a
  * *tall* stack: `iterations` passes (10) then cannot carry the load from the ground to the top,
- * and the shock passes do most of the work. There they sweep each manifold up to
- * TALL_INNER_SWEEPS times, and most of their impulses stay out of the warm start.
+ * and the shock passes do most of the work. There they sweep the contacts of each body with the
+ * layer below up to TALL_INNER_SWEEPS times, and most of their impulses stay out of the warm start.
  */
 const TALL_LAYERS = 12;
-/** Inner sweeps over one manifold in a shock pass of a tall stack (at most). */
-const TALL_INNER_SWEEPS = 8;
+/**
+ * Inner sweeps over the contacts of one body with the layer below in a shock pass of a tall stack
+ * (at most). A box of a pyramid rests on two: with 8 the pyramid of 40 rows slid apart after
+ * about 10 s, with 16 it stands (see {@link ContactSolver.shockPropagate}).
+ */
+const TALL_INNER_SWEEPS = 16;
 /**
  * The share of a tall stack's shock impulses that the warm start leaves out (see
  * {@link ContactSolver.shockPropagate}). With all of it (1) the columns stand as well, but the
@@ -95,9 +103,17 @@ export abstract class ContactSolver {
   private mfRestitution = new Float64Array(16);
   /** Twist radius R of each patch: the mean distance of its points from their centroid. */
   protected mfRadius = new Float64Array(16);
-  /** Manifold order of the shock passes (lowest layer first). */
+  /**
+   * Manifold order of the shock passes: lowest layer first, and in a layer the manifolds of one
+   * upper body together (see {@link ContactSolver.shockPropagate}).
+   */
   private shockOrder = new Int32Array(16);
+  /** The upper body of each manifold of `shockOrder`, at the same place: a run of one is a group. */
+  private shockUpper = new Int32Array(16);
+  /** The manifolds in order of their upper body (the first of the two sorts of shockPropagate). */
+  private byUpper = new Int32Array(16);
   private layerCount = new Int32Array(16);
+  private upperCount = new Int32Array(16);
   /** The friction patch rows, PR per manifold. */
   protected patchRows: Float64Array;
   /** Accumulated tangent impulses (m per manifold) and twist impulses (q per manifold). */
@@ -188,6 +204,8 @@ export abstract class ContactSolver {
     this.mfRestitution = growFloat64(this.mfRestitution, need);
     this.mfRadius = growFloat64(this.mfRadius, need);
     this.shockOrder = growInt32(this.shockOrder, need);
+    this.shockUpper = growInt32(this.shockUpper, need);
+    this.byUpper = growInt32(this.byUpper, need);
     this.patchRows = growFloat64(this.patchRows, need * this.PR * this.RS, keep * this.PR * this.RS);
     this.lambdaP = growFloat64(this.lambdaP, need * this.m, keep * this.m);
     this.lambdaW = growFloat64(this.lambdaW, need * Math.max(1, this.q), keep * this.q);
@@ -544,26 +562,44 @@ export abstract class ContactSolver {
   }
 
   /**
-   * One Gauss–Seidel pass over the manifolds (friction, then normal). With `shock`, manifolds go
-   * in layer order and the lower body of each contact between layers receives no impulse.
+   * One Gauss–Seidel pass over the manifolds (friction, then normal). Returns whether no row's
+   * velocity changed by more than the tolerance.
    */
-  private pass(sb: SolverBodies, shock: boolean, sweeps = 1): boolean {
-    // A shock pass settles each manifold against its frozen lower body with a few inner sweeps:
-    // the block is then solved whole, so its points share the load evenly and the upper body
-    // gets no spurious spin from the order the points are visited in. A sweep that changed no
-    // row's velocity by more than the tolerance ends them: the next would change less.
+  private pass(sb: SolverBodies): boolean {
+    const c = this.constants;
+    c[SOLVE_CHANGE] = 0;
+    for (let mf = 0; mf < this.mfCount; mf += 1) this.solveManifold(sb, mf, false);
+    return c[SOLVE_CHANGE] <= c[SOLVE_TOLERANCE];
+  }
+
+  /**
+   * One shock pass: the manifolds in layer order, the lower body of each contact between layers
+   * receiving no impulse. The contacts of one upper body with the layer below are settled together
+   * against their frozen lower bodies, with up to `sweeps` sweeps over them: the block is then
+   * solved whole, so the points of a face share the load evenly (one sweep leaves it on the first
+   * corner visited, which spins the body), and a body resting on two (a box of a pyramid) gets the
+   * velocity both supports allow, not that of the one visited last. A sweep that changed no row's
+   * velocity by more than the tolerance ends them: the next would change less. Returns whether
+   * every group's first sweep was such a sweep.
+   */
+  private shockPass(sb: SolverBodies, sweeps: number): boolean {
     const c = this.constants;
     const tolerance = c[SOLVE_TOLERANCE];
-    const inner = shock ? sweeps : 1;
+    const order = this.shockOrder;
+    const upper = this.shockUpper;
+    const count = this.mfCount;
     let converged = true;
-    for (let o = 0; o < this.mfCount; o += 1) {
-      const mf = shock ? this.shockOrder[o] : o;
-      for (let sweep = 0; sweep < inner; sweep += 1) {
+    let start = 0;
+    while (start < count) {
+      let end = start + 1;
+      while (end < count && upper[end] === upper[start]) end += 1;
+      for (let sweep = 0; sweep < sweeps; sweep += 1) {
         c[SOLVE_CHANGE] = 0;
-        this.solveManifold(sb, mf, shock);
+        for (let o = start; o < end; o += 1) this.solveManifold(sb, order[o], true);
         if (c[SOLVE_CHANGE] <= tolerance) break;
         converged = false;
       }
+      start = end;
     }
     return converged;
   }
@@ -583,7 +619,7 @@ export abstract class ContactSolver {
     let it = 0;
     while (it < iterations) {
       it += 1;
-      if (this.pass(sb, false)) break;
+      if (this.pass(sb)) break;
     }
     this.passesRun = it;
     return it;
@@ -591,13 +627,20 @@ export abstract class ContactSolver {
 
   /** One Gauss–Seidel pass over every manifold (the world interleaves it with the joints). */
   iterate(sb: SolverBodies): void {
-    this.pass(sb, false);
+    this.pass(sb);
   }
 
   /**
    * Shock propagation: layers counted from the immovable and kinematic bodies through the
    * contacts (breadth first, by relaxation), then `passes` passes from the ground up in which the
    * lower body of a contact between two layers is infinitely heavy.
+   *
+   * The order of a pass: by layer, and in a layer the manifolds of one upper body together (two
+   * stable counting sorts, by upper body, then by layer; the order of the manifolds is otherwise
+   * kept). Manifold by manifold, a box resting on two others took the velocity of the one
+   * visited last: where the supports spread apart a little (a pyramid's rows do, by the order of
+   * the Gauss–Seidel passes), every box above copied the motion of its right-hand support, the
+   * upper part of the pyramid slid sideways as one block, and pyramids of 40 rows fell.
    */
   shockPropagate(sb: SolverBodies, passes: number): void {
     if (passes <= 0 || this.mfCount === 0) return;
@@ -631,12 +674,23 @@ export abstract class ContactSolver {
       cnt[layer + 1] += 1;
     }
     for (let l = 1; l < maxDepth + 3; l += 1) cnt[l] += cnt[l - 1];
-    for (let mf = 0; mf < this.mfCount; mf += 1) {
+    const bodies = sb.count;
+    this.upperCount = growInt32(this.upperCount, bodies + 1);
+    const ucnt = this.upperCount;
+    ucnt.fill(0, 0, bodies + 1);
+    for (let mf = 0; mf < this.mfCount; mf += 1) ucnt[this.upperBody(depth, mf) + 1] += 1;
+    for (let i = 1; i <= bodies; i += 1) ucnt[i] += ucnt[i - 1];
+    const byUpper = this.byUpper;
+    for (let mf = 0; mf < this.mfCount; mf += 1) byUpper[ucnt[this.upperBody(depth, mf)]++] = mf;
+    for (let i = 0; i < this.mfCount; i += 1) {
+      const mf = byUpper[i];
       const layer = Math.min(depth[this.mfA[mf]], depth[this.mfB[mf]]) + 1;
-      this.shockOrder[cnt[layer]++] = mf;
+      const at = cnt[layer]++;
+      this.shockOrder[at] = mf;
+      this.shockUpper[at] = this.upperBody(depth, mf);
     }
     if (maxDepth < TALL_LAYERS) {
-      for (let it = 0; it < passes; it += 1) if (this.pass(sb, true, SHOCK_INNER_SWEEPS)) return;
+      for (let it = 0; it < passes; it += 1) if (this.shockPass(sb, SHOCK_INNER_SWEEPS)) return;
       return;
     }
     // A tall stack. The impulses a shock pass adds were computed against an infinitely heavy
@@ -654,11 +708,26 @@ export abstract class ContactSolver {
     keptP.set(this.lambdaP.subarray(0, np));
     keptW.set(this.lambdaW.subarray(0, nw));
     keptN.set(this.lambdaN.subarray(0, nn));
-    for (let it = 0; it < passes; it += 1) if (this.pass(sb, true, TALL_INNER_SWEEPS)) break;
+    for (let it = 0; it < passes; it += 1) if (this.shockPass(sb, TALL_INNER_SWEEPS)) break;
     for (let i = 0; i < np; i += 1) keptP[i] = SHOCK_LEFT_OUT * (this.lambdaP[i] - keptP[i]);
     for (let i = 0; i < nw; i += 1) keptW[i] = SHOCK_LEFT_OUT * (this.lambdaW[i] - keptW[i]);
     for (let i = 0; i < nn; i += 1) keptN[i] = SHOCK_LEFT_OUT * (this.lambdaN[i] - keptN[i]);
     this.shocked = true;
+  }
+
+  /**
+   * The upper body of manifold `mf` in the shock passes: the one farther from the ground; of two
+   * in the same layer, the later one (such a contact has no frozen side, and a group of one body
+   * settles its contacts with both sides alike).
+   */
+  private upperBody(depth: Int32Array, mf: number): number {
+    const a = this.mfA[mf];
+    const b = this.mfB[mf];
+    const da = depth[a];
+    const db = depth[b];
+    if (da > db) return a;
+    if (db > da) return b;
+    return a > b ? a : b;
   }
 
   /**

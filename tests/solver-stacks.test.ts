@@ -14,7 +14,7 @@
 import { describe, expect, it } from 'vitest';
 import { Body, defaultParams, HyperBox } from '@physin/engine';
 import { randomArray, seeded, uniform } from './support/random.js';
-import { addBall, addBox, addGround, distance, horizontalDrift, makeWorld, run } from './support/scenes.js';
+import { addBall, addBox, addGround, addPyramid, distance, horizontalDrift, makeWorld, run } from './support/scenes.js';
 
 const SLOP = defaultParams.penetrationSlop;
 const HEIGHT_TOL = SLOP + 1e-3;
@@ -101,11 +101,7 @@ describe('3D stacks and a pyramid', () => {
   it('a pyramid of 20 rows (210 unit boxes, spacing 1.05 in x, rows centred) stands 10 s: every box within 1e-5 m of its start', () => {
     const world = makeWorld(3);
     addGround(world);
-    const boxes: Body[] = [];
-    for (let row = 0; row < 20; row += 1) {
-      const count = 20 - row;
-      for (let i = 0; i < count; i += 1) boxes.push(addBox(world, [(i - (count - 1) / 2) * 1.05, 0.5 + row, 0], 0.5));
-    }
+    const boxes = addPyramid(world, 20);
     expect(boxes.length).toBe(210);
     const start = boxes.map((b) => Float64Array.from(b.x));
     let maxDisplacement = 0;

@@ -15,7 +15,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import type { Body } from '@physin/engine';
-import { addBox, addGround, horizontalDrift, makeWorld, run } from './support/scenes.js';
+import { addBox, addGround, addPyramid, horizontalDrift, makeWorld, run } from './support/scenes.js';
 
 /** Largest sideways drift and rotation angle of any box, and the top's largest height error. */
 function column(n: number, count: number) {
@@ -66,11 +66,7 @@ describe('a pyramid of 40 rows stands at the defaults (sleep off)', () => {
   it('820 unit boxes, spacing 1.05, start touching: after 4 s every box within 1e-4 m of its start', () => {
     const world = makeWorld(3);
     addGround(world);
-    const boxes: Body[] = [];
-    for (let row = 0; row < 40; row += 1) {
-      const count = 40 - row;
-      for (let i = 0; i < count; i += 1) boxes.push(addBox(world, [(i - (count - 1) / 2) * 1.05, 0.5 + row, 0], 0.5));
-    }
+    const boxes = addPyramid(world, 40);
     const start = boxes.map((b) => Float64Array.from(b.x));
     let worst = 0;
     run(world, 240, 1 / 60, (s) => {

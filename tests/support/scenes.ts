@@ -91,6 +91,19 @@ export function addStack(world: World, count: number, half: number, material: Pa
   return out;
 }
 
+/**
+ * A pyramid in the x-y plane of 3D: a base row of `rows` unit boxes 1.05 m apart, each row one box
+ * shorter and centred on the one below, touching it. Returns the boxes, base row first.
+ */
+export function addPyramid(world: World, rows: number): Body[] {
+  const boxes: Body[] = [];
+  for (let row = 0; row < rows; row += 1) {
+    const count = rows - row;
+    for (let i = 0; i < count; i += 1) boxes.push(addBox(world, [(i - (count - 1) / 2) * 1.05, 0.5 + row, 0], 0.5));
+  }
+  return boxes;
+}
+
 /** Largest |x_d − ref_d| over the non-vertical axes d != 1. */
 export function horizontalDrift(x: ArrayLike<number>, ref: ArrayLike<number>): number {
   let m = 0;

@@ -23,7 +23,6 @@ import type { CollisionEvent } from './contacts/contact-events.js';
 import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from './contacts/contact-set.js';
 import type { ProxyTables } from './contacts/contact-set.js';
 import type { CompoundShape } from './shapes/compound.js';
-import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
 import type { ContactSolver } from './solver/contact-solver.js';
 import { AwakeSet, Islands } from './solver/islands.js';
@@ -51,10 +50,10 @@ import {
 import { integrateVelocities } from './integrator/velocities.js';
 import type { Joint, JointOwner } from './joints/joint.js';
 import type { JointSolver } from './joints/joint-solver.js';
+import type { WorldJoints } from './joints/world-joints.js';
 import { defaultParams, mergeParams, scaledParams } from './params.js';
 import { checkComponents, inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
-import type { WorldParts } from './snapshot/world-parts.js';
 import { Float64Slab, slabPose } from './slab.js';
 
 /** Where the poses of bodies joining a world are cut from (see slab.ts: one buffer per pose cost more than the rest of addBody). */
@@ -281,6 +280,8 @@ export class WorldBase {
   private jointView: readonly Joint[] = Object.freeze([]);
   /** Made by the first joint added (Joint.createSolver), so a world without joints never loads it. */
   private jointSolver: JointSolver | null = null;
+  /** The joint bookkeeping, brought by the first joint added (Joint.worldJoints), like the solver. */
+  private jointOps: WorldJoints | null = null;
   /** Joints that broke in this step, their events sent after it. */
   private readonly brokenJoints: Joint[] = [];
   private readonly jointOwner: JointOwner = {
@@ -292,8 +293,8 @@ export class WorldBase {
   };
   /** Per body (world index): the distance it can close in one sub-step (m), for speculative contacts. */
   private reach = new Float64Array(16);
-  /** The broadphase boxes lag the poses (a step ran since the last query). */
-  private boundsStale = false;
+  /** @internal Whether the broadphase boxes lag the poses (the queries and snapshots read it). */
+  boundsStale = false;
   private readonly events: ContactEvents;
   private readonly collisionEvent: CollisionEvent;
   /** The pair filter (setPairFilter), or null. Not saved in snapshots: a function is code, not state. */
@@ -712,34 +713,12 @@ export class WorldBase {
    *   is not in this world, it is already in this or another world, or it broke. Nothing changes.
    */
   addConstraint<J extends Joint>(joint: J): J {
-    const fn = 'World.addConstraint';
     if (!isJoint(joint)) {
       throw new TypeError(
-        `${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
+        `World.addConstraint: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
       );
     }
-    if (joint.D.n !== this.n) {
-      throw new RangeError(`${fn}: argument 'joint' has n = ${joint.D.n} but the world has n = ${this.n}`);
-    }
-    if (joint.brokenFlag) throw new RangeError(`${fn}: argument 'joint' broke; build a new joint`);
-    if (joint.owner === this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is already in this world`);
-    if (joint.owner !== null)
-      throw new RangeError(`${fn}: argument 'joint' already belongs to another world; remove it there first`);
-    if (joint.a.owner !== this.owner) {
-      throw new RangeError(`${fn}: body 'a' (${joint.a.label}) of the joint is not in this world; add it first (World.addBody)`);
-    }
-    if (joint.b !== null && joint.b.owner !== this.owner) {
-      throw new RangeError(`${fn}: body 'b' (${joint.b.label}) of the joint is not in this world; add it first (World.addBody)`);
-    }
-    this.jointSolver ??= joint.createSolver(this.D);
-    joint.owner = this.jointOwner;
-    joint.lambda.fill(0);
-    this.jointList.push(joint);
-    this.jointView = Object.freeze(this.jointList.slice());
-    this.linkBodies(joint, 1);
-    joint.a.wake();
-    joint.b?.wake();
-    return joint;
+    return (this.jointOps ??= joint.worldJoints).add(this, joint);
   }
 
   /**
@@ -751,39 +730,9 @@ export class WorldBase {
     if (!isJoint(joint)) {
       throw new TypeError(`${fn}: argument 'joint' must be a joint, got ${joint === null ? 'null' : typeof joint}`);
     }
-    const index = joint.owner === this.jointOwner ? this.jointList.indexOf(joint) : -1;
-    if (index < 0) throw new RangeError(`${fn}: argument 'joint' is not in this world`);
-    this.detachJoint(joint, index);
-    joint.a.wake();
-    joint.b?.wake();
+    if (joint.owner !== this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is not in this world`);
+    this.jointOps!.remove(this, joint);
     return this;
-  }
-
-  /** Takes a joint out of the list (it is known to be at `index`). */
-  private detachJoint(joint: Joint, index: number): void {
-    this.jointList.splice(index, 1);
-    this.jointView = Object.freeze(this.jointList.slice());
-    this.linkBodies(joint, -1);
-    joint.owner = null;
-  }
-
-  /** Counts the joint on its bodies (+1 or −1) and keeps their collision filter. */
-  private linkBodies(joint: Joint, sign: number): void {
-    const A = joint.a;
-    const B = joint.b;
-    A.jointCount += sign;
-    if (B === null) return;
-    B.jointCount += sign;
-    if (joint.collideConnected) return;
-    if (sign > 0) {
-      (A.jointPeers ??= []).push(B);
-      (B.jointPeers ??= []).push(A);
-    } else {
-      A.jointPeers!.splice(A.jointPeers!.indexOf(B), 1);
-      B.jointPeers!.splice(B.jointPeers!.indexOf(A), 1);
-      if (A.jointPeers!.length === 0) A.jointPeers = null;
-      if (B.jointPeers!.length === 0) B.jointPeers = null;
-    }
   }
 
   /**
@@ -850,7 +799,7 @@ export class WorldBase {
       this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax, this.filterFn);
       this.solveContacts(p);
       const js = this.jointSolver;
-      if (js !== null && js.brokenCount > 0) this.breakJoints(js);
+      if (js !== null && js.brokenCount > 0) this.jointOps!.breakJoints(this, js);
       // (with the bodies the solver woke)
       awake.sort();
       awake.visitedBodies = awake.count;
@@ -873,49 +822,8 @@ export class WorldBase {
     this.clock[0] = this.clock[0]! + dt;
     this.clock[1] = this.clock[1]! + 1;
     if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
-    if (this.brokenJoints.length > 0) this.dispatchBroken();
+    if (this.brokenJoints.length > 0) this.jointOps!.dispatchBroken(this);
     return this;
-  }
-
-  // ---- snapshots: snapshotWorld / restoreWorld (snapshot/snapshot.ts, docs/engine.md) ----
-
-  /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
-  snapshotParts(): WorldParts {
-    this.compact();
-    // A restore sets the bodies' sleep flags and poses itself: the awake set is rebuilt after it.
-    this.awake.stale = true;
-    return {
-      clock: this.clock,
-      reach: this.reach,
-      boundsStale: this.boundsStale,
-      broadphase: this.broadphase as BroadphaseBase,
-      bodyOfProxy: this.bodyOfProxy,
-      partProxies: this.partProxies,
-      setBodyProxies: (body: Body, ids: Int32Array | null): void => {
-        const compound = ids === null ? null : (body.shape as unknown as CompoundShape);
-        const poses: Pose[] | null = compound === null ? null : [];
-        if (compound !== null) {
-          for (let i = 0; i < compound.partCount; i += 1) {
-            const pose = createPose(this.n);
-            this.partPose(body, compound, i, pose);
-            poses!.push(pose);
-          }
-        }
-        this.setBodyProxies(body, ids, poses);
-      },
-      clearProxyTables: (): void => {
-        this.bodyOfProxy.length = 0;
-        this.partProxies.length = 0;
-        this.proxyTables.shape.length = 0;
-        this.proxyTables.pose.length = 0;
-        this.proxyTables.part.length = 0;
-      },
-      contacts: this.contacts,
-      events: this.events,
-      setBoundsStale: (stale: boolean): void => {
-        this.boundsStale = stale;
-      },
-    };
   }
 
   // ---- the stages behind step() ----
@@ -1243,27 +1151,6 @@ export class WorldBase {
     sb.writeBack();
   }
 
-  /** The joints the solver found over their break load leave the world (events after the step). */
-  private breakJoints(js: JointSolver): void {
-    for (let i = 0; i < js.brokenCount; i += 1) {
-      const joint = js.broken[i]!;
-      const index = this.jointList.indexOf(joint);
-      if (index < 0) continue;
-      joint.brokenFlag = true;
-      this.detachJoint(joint, index);
-      joint.a.wake();
-      joint.b?.wake();
-      this.brokenJoints.push(joint);
-    }
-    js.brokenCount = 0;
-  }
-
-  /** Sends the 'broken' events of this step. */
-  private dispatchBroken(): void {
-    const list = this.brokenJoints.splice(0, this.brokenJoints.length);
-    for (const joint of list) joint.emitBroken();
-  }
-
   /** Stage 6a: begin / end events from the touching flags of this sub-step. */
   private recordEvents(): void {
     const contacts = this.contacts;
@@ -1324,59 +1211,6 @@ export class WorldBase {
         e.body.emitCollision(e);
       }
     }
-  }
-
-  /** Brings every broadphase box up to the bodies' poses (before a query). */
-  private refreshBounds(): void {
-    this.compact();
-    const awake = this.awake;
-    if (!this.boundsStale && awake.movedCount === 0) return;
-    awake.sort();
-    for (let i = 0; i < awake.movedCount; i += 1) {
-      const body = awake.moved[i]!;
-      if (!body.poseDirty || body.worldIndex < 0) continue;
-      this.updatePose(body);
-      body.poseDirty = false;
-      this.reach[body.worldIndex] = 0;
-      this.moveProxy(body);
-    }
-    awake.clearMoved();
-    if (this.boundsStale) {
-      for (let b = 0; b < awake.count; b += 1) {
-        const body = awake.list[b]!;
-        if (body.poseDirty) {
-          this.updatePose(body);
-          body.poseDirty = false;
-        }
-        this.reach[body.worldIndex] = 0;
-        this.moveProxy(body);
-      }
-    }
-    this.boundsStale = false;
-  }
-
-  // ---- queries: castRay / queryBox (queries.ts) ----
-
-  /**
-   * @internal For the queries of queries.ts: the broadphase with every box brought up to the
-   * bodies' poses, and the body of each proxy id.
-   */
-  queryParts(): {
-    readonly broadphase: Broadphase;
-    readonly bodyOfProxy: readonly (Body | null)[];
-    readonly shapeOfProxy: readonly (Shape | null)[];
-    readonly poseOfProxy: readonly (Pose | null)[];
-    readonly partOfProxy: readonly number[];
-  } {
-    this.refreshBounds();
-    const t = this.proxyTables;
-    return {
-      broadphase: this.broadphase,
-      bodyOfProxy: this.bodyOfProxy,
-      shapeOfProxy: t.shape,
-      poseOfProxy: t.pose,
-      partOfProxy: t.part,
-    };
   }
 
   /** Undoes the current step and throws the error that names the body. */

@@ -21,6 +21,7 @@ import { readContacts, readPendingEnds } from './contacts.js';
 import { readJoint } from './joints.js';
 import { SnapshotReader } from './reader.js';
 import { readShape } from './shapes.js';
+import { worldParts } from './world-parts.js';
 import { PARAM_BOOLEAN, PARAM_NUMBER } from './write-world.js';
 
 /** Reads a world; `create` is `new World(options)` (passed in so this module imports no World value). */
@@ -94,7 +95,7 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   }
   for (const f of flags) applyBodyFlags(D, f);
 
-  const parts = world.snapshotParts();
+  const parts = worldParts(world);
   r.f64s(bodyCount, parts.reach);
   readBroadphase(r, parts.broadphase);
   const bp = parts.broadphase;

@@ -11,9 +11,14 @@ import { computeBoundsUnchecked } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
-import { createPose } from './collision/manifold.js';
 import type { Pose } from './collision/manifold.js';
-import { buildNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
+import {
+  DEFAULT_AXIS_TOLERANCE,
+  DEFAULT_CLIP_TOLERANCE,
+  DEFAULT_FEATURE_TIE_TOLERANCE,
+  DEFAULT_TORUS_RING_POINTS,
+  narrowphaseScratchOf,
+} from './collision/narrowphase-scratch.js';
 import type { BoxBoxSatKernel } from './collision/narrowphase-scratch.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './collision/broadphase-constants.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
@@ -280,7 +285,7 @@ export class WorldBase {
   private jointView: readonly Joint[] = Object.freeze([]);
   /** Made by the first joint added (Joint.createSolver), so a world without joints never loads it. */
   private jointSolver: JointSolver | null = null;
-  /** The joint bookkeeping, brought by the first joint added (Joint.worldJoints), like the solver. */
+  /** @internal The joint bookkeeping, brought by the first joint added (Joint.worldJoints), like the solver. */
   private jointOps: WorldJoints | null = null;
   /** Joints that broke in this step, their events sent after it. */
   private readonly brokenJoints: Joint[] = [];
@@ -379,9 +384,14 @@ export class WorldBase {
     this.constants = createStepConstants();
     const unit = params.lengthUnit;
     this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
-    this.narrowScratch = buildNarrowphaseScratch(kernels.boxBoxSat, D.n, {
-      featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit,
-    });
+    this.narrowScratch = narrowphaseScratchOf(
+      kernels.boxBoxSat,
+      D.n,
+      DEFAULT_AXIS_TOLERANCE,
+      DEFAULT_FEATURE_TIE_TOLERANCE * unit,
+      DEFAULT_CLIP_TOLERANCE,
+      DEFAULT_TORUS_RING_POINTS,
+    );
     this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
     this.contacts = new ContactSet(D.n, this.proxyTables);
     this.solverBodies = new SolverBodies(D);
@@ -595,16 +605,9 @@ export class WorldBase {
     const compound = body.shape.kind === 'compound' ? (body.shape as unknown as CompoundShape) : null;
     const partPoses: Pose[] = [];
     let finite = 0;
-    if (compound !== null) {
-      // One proxy per part: each part's box must be finite.
-      for (let i = 0; i < compound.partCount; i += 1) {
-        const pose = createPose(this.n);
-        this.partPose(body, compound, i, pose);
-        partPoses.push(pose);
-        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
-        for (let c = 0; c < this.n; c += 1) finite += sc.min[c]! * 0 + sc.max[c]! * 0;
-      }
-    } else if (isHalfSpace) this.halfSpacePlane(body);
+    // One proxy per part: each part's box must be finite.
+    if (compound !== null) finite = compound.worldOps.newPartPoses(this.n, body.pose, compound, sc.min, sc.max, partPoses);
+    else if (isHalfSpace) this.halfSpacePlane(body);
     else this.boundsOf(body);
     if (compound === null) finite = isHalfSpace ? sc.max[0]! * 0 : 0;
     for (let i = 0; i < this.n && compound === null; i += 1)
@@ -626,12 +629,8 @@ export class WorldBase {
     this.awake.sync(body);
     const bp = this.broadphase;
     if (compound !== null) {
-      const ids = new Int32Array(compound.partCount);
-      for (let i = 0; i < ids.length; i += 1) {
-        const pose = partPoses[i]!;
-        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
-        ids[i] = bp.createProxy(sc.min, sc.max, body.motion === MOTION_STATIC);
-      }
+      const isStatic = body.motion === MOTION_STATIC;
+      const ids = compound.worldOps.createPartProxies(this.n, compound, partPoses, bp, isStatic, sc.min, sc.max);
       body.proxyId = ids[0]!;
       this.setBodyProxies(body, ids, partPoses);
       return body;
@@ -903,38 +902,9 @@ export class WorldBase {
     const id = body.proxyId;
     if (id < 0) return;
     const ids = this.partProxies[id];
-    if (ids !== undefined && ids !== null) this.updatePartPoses(body, ids);
-  }
-
-  /** The poses of a compound body's parts (proxies `ids`) from the body's pose. */
-  private updatePartPoses(body: Body, ids: Int32Array): void {
-    const compound = body.shape as unknown as CompoundShape;
-    const poses = this.proxyTables.pose;
-    for (let i = 0; i < ids.length; i += 1) this.partPose(body, compound, i, poses[ids[i]!]!);
-  }
-
-  /**
-   * The world pose of part `i` of a compound body into `out`: x_i = x + M·offset_i,
-   * M_i = M·rotation_i (the body's pose composed with the part's place in the body).
-   */
-  private partPose(body: Body, compound: CompoundShape, i: number, out: Pose): void {
-    const n = this.n;
-    const pose = body.pose!;
-    const x = pose.x;
-    const M = pose.M;
-    const off = compound.partOffsets;
-    const rot = compound.partRotations;
-    const o = i * n;
-    const q = i * n * n;
-    for (let a = 0; a < n; a += 1) {
-      let s = x[a]!;
-      for (let c = 0; c < n; c += 1) s += M[a * n + c]! * off[o + c]!;
-      out.x[a] = s;
-      for (let b = 0; b < n; b += 1) {
-        let t = 0;
-        for (let c = 0; c < n; c += 1) t += M[a * n + c]! * rot[q + c * n + b]!;
-        out.M[a * n + b] = t;
-      }
+    if (ids !== undefined && ids !== null) {
+      const compound = body.shape as unknown as CompoundShape;
+      compound.worldOps.updatePartPoses(this.n, pose, compound, ids, this.proxyTables.pose);
     }
   }
 
@@ -1024,7 +994,19 @@ export class WorldBase {
   private moveProxy(body: Body): void {
     const ids = this.partProxies[body.proxyId];
     if (ids !== undefined && ids !== null) {
-      this.moveParts(body, ids);
+      const { min, max } = this.scratch;
+      const t = this.proxyTables;
+      (body.shape as unknown as CompoundShape).worldOps.moveParts(
+        this.n,
+        ids,
+        t.shape,
+        t.pose,
+        this.reach,
+        body.worldIndex,
+        min,
+        max,
+        this.broadphase,
+      );
     } else if (body.shape.kind === 'halfspace') {
       this.halfSpacePlane(body);
       this.broadphase.moveHalfSpace(body.proxyId, this.scratch.normal, this.scratch.max[0]!);
@@ -1035,25 +1017,6 @@ export class WorldBase {
       for (let i = 0; i < this.n; i += 1) finite += min[i]! * 0 + max[i]! * 0;
       // A body at the edge of overflow keeps its last box; its own step then fails by name.
       if (finite === 0) this.broadphase.moveProxy(body.proxyId, min, max);
-    }
-  }
-
-  /** Moves the proxies of a compound body's parts to their poses, each box grown by the body's reach. */
-  private moveParts(body: Body, ids: Int32Array): void {
-    const { min, max } = this.scratch;
-    const grow = this.reach[body.worldIndex]!;
-    const t = this.proxyTables;
-    for (let p = 0; p < ids.length; p += 1) {
-      const id = ids[p]!;
-      const pose = t.pose[id]!;
-      computeBoundsUnchecked(min, max, this.n, t.shape[id] as unknown as QueryShape, pose.x, pose.M, 0);
-      let finite = 0;
-      for (let i = 0; i < this.n; i += 1) {
-        min[i] = min[i]! - grow;
-        max[i] = max[i]! + grow;
-        finite += min[i]! * 0 + max[i]! * 0;
-      }
-      if (finite === 0) this.broadphase.moveProxy(id, min, max);
     }
   }
 

@@ -6,7 +6,7 @@
 import type { Broadphase, BroadphaseOptions, BroadphaseStats } from './broadphase.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './broadphase-constants.js';
 import { sortKeys } from './broadphase-sort.js';
-import { checkDimension, checkDirection, checkFiniteArray, checkNumber, checkOutput } from './query-checks.js';
+import { checkDimension, checkDirection, checkFiniteArray, checkNumber } from './query-checks.js';
 
 /** Proxy flag bit: the id is in use. */
 export const ALIVE = 1;
@@ -283,43 +283,6 @@ export abstract class BroadphaseBase implements Broadphase {
     if (isStatic) this.flags[id]! |= STATIC;
     else this.flags[id]! &= ~STATIC;
     this.markMoved(id);
-  }
-
-  isAlive(id: number): boolean {
-    return Number.isInteger(id) && id >= 0 && id < this.highWater && (this.flags[id]! & ALIVE) !== 0;
-  }
-
-  isAwake(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & AWAKE) !== 0;
-  }
-
-  isStatic(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & STATIC) !== 0;
-  }
-
-  isHalfSpace(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & HALFSPACE) !== 0;
-  }
-
-  getFatBounds(id: number, outMin: Float64Array, outMax: Float64Array): void {
-    this.checkBoxProxy(id);
-    checkOutput(outMin, this.n, 'outMin');
-    checkOutput(outMax, this.n, 'outMax');
-    const b = id * this.n;
-    outMin.set(this.fatMin.subarray(b, b + this.n));
-    outMax.set(this.fatMax.subarray(b, b + this.n));
-  }
-
-  getBounds(id: number, outMin: Float64Array, outMax: Float64Array): void {
-    this.checkBoxProxy(id);
-    checkOutput(outMin, this.n, 'outMin');
-    checkOutput(outMax, this.n, 'outMax');
-    const b = id * this.n;
-    outMin.set(this.tightMin.subarray(b, b + this.n));
-    outMax.set(this.tightMax.subarray(b, b + this.n));
   }
 
   // ---- the update ----

@@ -1,8 +1,9 @@
 /**
- * The broadphase's box query and ray walk, as functions rather than methods: a class's methods
- * cannot be dropped by a bundler, and a world that never queries or casts a ray should not carry
- * them (docs/architecture.md, What a scene pays for). The query code of collision/query.ts calls
- * them; they read the broadphase's and the tree's storage directly.
+ * The broadphase's box query and ray walk, and the reading of a proxy's flags and boxes, as
+ * functions rather than methods: a class's methods cannot be dropped by a bundler, and a world
+ * that never queries, casts a ray or restores a snapshot should not carry them
+ * (docs/architecture.md, What a scene pays for). The query code of collision/query.ts and the
+ * snapshot code call them; they read the broadphase's and the tree's storage directly.
  *
  * @module
  */
@@ -10,11 +11,18 @@ import type { ProxyRayCast, ProxyVisitor } from './broadphase.js';
 import type { BroadphaseBase } from './broadphase-base.js';
 import type { DynamicAabbTree } from './broadphase-aabb-tree.js';
 import { TreeBroadphase } from './broadphase-tree.js';
-import { checkDirection, checkFiniteArray, checkNumber } from './query-checks.js';
+import { ALIVE, AWAKE, HALFSPACE, STATIC } from './broadphase-base.js';
+import { checkDirection, checkFiniteArray, checkNumber, checkOutput } from './query-checks.js';
 
 /** What these functions read of a broadphase (its protected and private parts). */
 interface BaseParts {
   readonly n: number;
+  readonly highWater: number;
+  readonly flags: Uint8Array;
+  readonly fatMin: Float64Array;
+  readonly fatMax: Float64Array;
+  checkLive(id: number, name: string): void;
+  checkBoxProxy(id: number): void;
   readonly tightMin: Float64Array;
   readonly tightMax: Float64Array;
   readonly qMin: Float64Array;
@@ -42,6 +50,55 @@ interface TreeParts {
   readonly child2: Int32Array;
   nodesVisited: number;
   stack: Int32Array;
+}
+
+/** True if `id` is a live proxy of `broadphase`. */
+export function proxyIsAlive(broadphase: BroadphaseBase, id: number): boolean {
+  const bp = broadphase as unknown as BaseParts;
+  return Number.isInteger(id) && id >= 0 && id < bp.highWater && (bp.flags[id]! & ALIVE) !== 0;
+}
+
+/** The flag `bit` of the live proxy `id` (throws for an id that is not live). */
+function flag(broadphase: BroadphaseBase, id: number, bit: number): boolean {
+  const bp = broadphase as unknown as BaseParts;
+  bp.checkLive(id, 'id');
+  return (bp.flags[id]! & bit) !== 0;
+}
+
+/** True if the live proxy `id` is awake. */
+export function proxyIsAwake(broadphase: BroadphaseBase, id: number): boolean {
+  return flag(broadphase, id, AWAKE);
+}
+
+/** True if the live proxy `id` is static (half-spaces are). */
+export function proxyIsStatic(broadphase: BroadphaseBase, id: number): boolean {
+  return flag(broadphase, id, STATIC);
+}
+
+/** True if the live proxy `id` is a half-space. */
+export function proxyIsHalfSpace(broadphase: BroadphaseBase, id: number): boolean {
+  return flag(broadphase, id, HALFSPACE);
+}
+
+/**
+ * Copies the tight box (the bounds last given; `fat` false) or the fattened box (`fat` true) of
+ * the box proxy `id` into outMin/outMax (n numbers each).
+ */
+export function proxyBounds(
+  broadphase: BroadphaseBase,
+  id: number,
+  outMin: Float64Array,
+  outMax: Float64Array,
+  fat = false,
+): void {
+  const bp = broadphase as unknown as BaseParts;
+  const n = bp.n;
+  bp.checkBoxProxy(id);
+  checkOutput(outMin, n, 'outMin');
+  checkOutput(outMax, n, 'outMax');
+  const b = id * n;
+  outMin.set((fat ? bp.fatMin : bp.tightMin).subarray(b, b + n));
+  outMax.set((fat ? bp.fatMax : bp.tightMax).subarray(b, b + n));
 }
 
 /**

@@ -92,18 +92,6 @@ export interface Broadphase {
   setAwake(id: number, awake: boolean): void;
   /** Makes a box proxy static or dynamic (it counts as moved, so its pairs are rebuilt). */
   setStatic(id: number, isStatic: boolean): void;
-  /** True if `id` is a live proxy. */
-  isAlive(id: number): boolean;
-  /** True if the live proxy `id` is awake. */
-  isAwake(id: number): boolean;
-  /** True if the live proxy `id` is static (half-spaces are). */
-  isStatic(id: number): boolean;
-  /** True if the live proxy `id` is a half-space. */
-  isHalfSpace(id: number): boolean;
-  /** Copies the fattened box of a box proxy into outMin/outMax (n numbers each). */
-  getFatBounds(id: number, outMin: Float64Array, outMax: Float64Array): void;
-  /** Copies the tight box (the bounds last given) of a box proxy into outMin/outMax. */
-  getBounds(id: number, outMin: Float64Array, outMax: Float64Array): void;
   /** Brings the pair set up to date; returns {@link pairCount}. Allocates nothing in steady state. */
   updatePairs(): number;
 }

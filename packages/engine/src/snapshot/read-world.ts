@@ -11,6 +11,7 @@
  * @module
  */
 import type { Body } from '../body.js';
+import { proxyIsAlive, proxyIsHalfSpace } from '../collision/broadphase-queries.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
 import type { WorldBase as World, WorldOptions } from '../world.js';
@@ -111,8 +112,10 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
       r.fail(`${body.label}'s part proxies do not match its compound`);
     partIds.push(ids);
     for (const id of ids ?? [body.proxyId]) {
-      if (!bp.isAlive(id) || byProxy[id] !== undefined) r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
-      if (bp.isHalfSpace(id) !== (body.shape.kind === 'halfspace')) r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
+      if (!proxyIsAlive(bp, id) || byProxy[id] !== undefined)
+        r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
+      if (proxyIsHalfSpace(bp, id) !== (body.shape.kind === 'halfspace'))
+        r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
       byProxy[id] = body;
       proxies += 1;
     }

@@ -52,7 +52,6 @@ interface WorldPrivate {
   readonly events: ContactEvents;
   readonly awake: AwakeSet;
   compact(): void;
-  partPose(body: Body, compound: CompoundShape, i: number, out: Pose): void;
   setBodyProxies(body: Body, ids: Int32Array | null, poses: Pose[] | null): void;
 }
 
@@ -75,7 +74,7 @@ export function worldParts(world: WorldBase): WorldParts {
       if (compound !== null) {
         for (let i = 0; i < compound.partCount; i += 1) {
           const pose = createPose(w.n);
-          w.partPose(body, compound, i, pose);
+          compound.worldOps.partPose(w.n, body.pose!, compound, i, pose);
           poses!.push(pose);
         }
       }

@@ -2,6 +2,15 @@ import { runInNewContext } from 'node:vm';
 import { setFlagsFromString } from 'node:v8';
 import { PerformanceObserver } from 'node:perf_hooks';
 import { describe, expect, it } from 'vitest';
+import {
+  proxyBounds,
+  proxyIsAlive,
+  proxyIsAwake,
+  proxyIsHalfSpace,
+  proxyIsStatic,
+  validateTree,
+} from '../packages/engine/src/collision/broadphase-queries.js';
+import type { BroadphaseBase } from '../packages/engine/src/collision/broadphase-base.js';
 import { createBroadphase } from '../packages/engine/src/collision/broadphase.js';
 import type { Broadphase, BroadphaseKind } from '../packages/engine/src/collision/broadphase.js';
 import { TreeBroadphase } from '../packages/engine/src/collision/broadphase-tree.js';
@@ -34,7 +43,7 @@ function randomBox(rand: () => number, n: number, spread: number): [Float64Array
 
 function liveIds(bp: Broadphase): number[] {
   const ids: number[] = [];
-  for (let id = 0; id < bp.idBound; id += 1) if (bp.isAlive(id)) ids.push(id);
+  for (let id = 0; id < bp.idBound; id += 1) if (proxyIsAlive(bp as BroadphaseBase, id)) ids.push(id);
   return ids;
 }
 
@@ -56,25 +65,25 @@ function bruteForce(s: Scene, which: 'fat' | 'tight' = 'fat'): { all: Set<string
   const lo = new Map<number, Float64Array>();
   const hi = new Map<number, Float64Array>();
   for (const id of ids) {
-    if (bp.isHalfSpace(id)) continue;
+    if (proxyIsHalfSpace(bp as BroadphaseBase, id)) continue;
     const a = new Float64Array(n);
     const b = new Float64Array(n);
-    if (which === 'fat') bp.getFatBounds(id, a, b);
-    else bp.getBounds(id, a, b);
+    if (which === 'fat') proxyBounds(bp as BroadphaseBase, id, a, b, true);
+    else proxyBounds(bp as BroadphaseBase, id, a, b);
     lo.set(id, a);
     hi.set(id, b);
   }
-  const active = (id: number): boolean => bp.isAwake(id) && !bp.isStatic(id);
+  const active = (id: number): boolean => proxyIsAwake(bp as BroadphaseBase, id) && !proxyIsStatic(bp as BroadphaseBase, id);
   const all = new Set<string>();
   const reported = new Set<string>();
   for (let x = 0; x < ids.length; x += 1) {
     for (let y = x + 1; y < ids.length; y += 1) {
       const a = ids[x]!;
       const b = ids[y]!;
-      if (bp.isStatic(a) && bp.isStatic(b)) continue;
+      if (proxyIsStatic(bp as BroadphaseBase, a) && proxyIsStatic(bp as BroadphaseBase, b)) continue;
       let hit: boolean;
-      if (bp.isHalfSpace(a)) hit = reaches(lo.get(b)!, hi.get(b)!, s.planes.get(a)!);
-      else if (bp.isHalfSpace(b)) hit = reaches(lo.get(a)!, hi.get(a)!, s.planes.get(b)!);
+      if (proxyIsHalfSpace(bp as BroadphaseBase, a)) hit = reaches(lo.get(b)!, hi.get(b)!, s.planes.get(a)!);
+      else if (proxyIsHalfSpace(bp as BroadphaseBase, b)) hit = reaches(lo.get(a)!, hi.get(a)!, s.planes.get(b)!);
       else hit = overlap(lo.get(a)!, hi.get(a)!, lo.get(b)!, hi.get(b)!);
       if (!hit) continue;
       all.add(key(a, b));
@@ -132,7 +141,7 @@ function mutate(s: Scene): void {
   const lo = new Float64Array(n);
   const hi = new Float64Array(n);
   for (const id of ids) {
-    if (bp.isHalfSpace(id)) {
+    if (proxyIsHalfSpace(bp as BroadphaseBase, id)) {
       if (rand() < 0.1) {
         const normal = randomUnitVector(rand, n);
         const offset = uniform(rand, -s.spread, 0);
@@ -143,7 +152,7 @@ function mutate(s: Scene): void {
     }
     const r = rand();
     if (r < 0.3) {
-      bp.getBounds(id, lo, hi);
+      proxyBounds(bp as BroadphaseBase, id, lo, hi);
       const step = rand() < 0.5 ? 0.03 : 0.6;
       const d = randomArray(rand, n, -step, step);
       bp.moveProxy(
@@ -154,9 +163,9 @@ function mutate(s: Scene): void {
     } else if (r < 0.33) {
       bp.destroyProxy(id);
     } else if (r < 0.4) {
-      bp.setAwake(id, !bp.isAwake(id));
+      bp.setAwake(id, !proxyIsAwake(bp as BroadphaseBase, id));
     } else if (r < 0.41) {
-      bp.setStatic(id, !bp.isStatic(id));
+      bp.setStatic(id, !proxyIsStatic(bp as BroadphaseBase, id));
     }
   }
   const births = Math.floor(rand() * 4);
@@ -202,7 +211,7 @@ describe.each(KINDS)('%s broadphase', (kind) => {
         expect(s.bp.stats.pairs).toBe(brute.all.size);
         // Fat boxes contain the tight ones: every truly overlapping pair is among them.
         for (const p of bruteForce(s, 'tight').reported) expect(brute.reported.has(p)).toBe(true);
-        if (s.bp instanceof TreeBroadphase) expect(s.bp.tree.validate()).toBeNull();
+        if (s.bp instanceof TreeBroadphase) expect(validateTree(s.bp.tree)).toBeNull();
         prevAll = brute.all;
         reportedTotal += count;
         asleepSkipped += brute.all.size - brute.reported.size;
@@ -267,12 +276,12 @@ describe('work follows what moved (tree)', () => {
     const hi = new Float64Array(n);
     let dynamicId = -1;
     for (let id = 0; id < bp.idBound; id += 1) {
-      if (!bp.isHalfSpace(id) && !bp.isStatic(id)) {
+      if (!proxyIsHalfSpace(bp as BroadphaseBase, id) && !proxyIsStatic(bp as BroadphaseBase, id)) {
         dynamicId = id;
         break;
       }
     }
-    bp.getBounds(dynamicId, lo, hi);
+    proxyBounds(bp as BroadphaseBase, dynamicId, lo, hi);
     expect(
       bp.moveProxy(
         dynamicId,
@@ -310,9 +319,9 @@ describe('work follows what moved (tree)', () => {
       mutate(s);
       bp.updatePairs();
     }
-    const leaves = liveIds(bp).filter((id) => !bp.isHalfSpace(id)).length;
+    const leaves = liveIds(bp).filter((id) => !proxyIsHalfSpace(bp as BroadphaseBase, id)).length;
     expect(bp.tree.treeHeight).toBeLessThanOrEqual(3 * Math.log2(leaves));
-    expect(bp.tree.validate()).toBeNull();
+    expect(validateTree(bp.tree)).toBeNull();
   });
 });
 

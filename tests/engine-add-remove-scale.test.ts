@@ -11,6 +11,9 @@
  *   deaths and moves (the paths of the bulk build and the walk).
  */
 import { afterEach, describe, expect, it, vi } from 'vitest';
+import { proxyBounds, validateTree } from '../packages/engine/src/collision/broadphase-queries.js';
+import type { BroadphaseBase } from '../packages/engine/src/collision/broadphase-base.js';
+import { queryParts } from '../packages/engine/src/queries.js';
 import { Body, HyperSphere, World, dims, queryBox } from '@physin/engine';
 import type { WorldBase } from '@physin/engine';
 import { createBroadphase } from '../packages/engine/src/collision/broadphase.js';
@@ -30,7 +33,7 @@ function ball(i: number): Body {
 
 /** The world's broadphase (a tree), through the internal accessor the queries use. */
 function treeOf(world: WorldBase): TreeBroadphase {
-  const bp = world.queryParts().broadphase;
+  const bp = queryParts(world).broadphase;
   expect(bp).toBeInstanceOf(TreeBroadphase);
   return bp as TreeBroadphase;
 }
@@ -101,7 +104,7 @@ describe('the step after a batch', () => {
     expect(callCounts(spies)).toMatchObject({ insert: 0, linkLeaf: 0, query: 0, rebuild: 1, selfPairs: 1 });
     vi.restoreAllMocks();
     const bp = treeOf(world);
-    expect(bp.tree.validate()).toBeNull();
+    expect(validateTree(bp.tree)).toBeNull();
     expect(bp.tree.leafCount).toBe(4000);
     expect(bp.tree.size).toBe(2 * 4000 - 1);
     // Shallow: the middle splits of a 40 × 40 grid leave it within a quarter of a balanced tree's 12.
@@ -114,7 +117,7 @@ describe('the step after a batch', () => {
     world.step(1 / 60);
     expect(callCounts(spies)).toMatchObject({ linkLeaf: 5, rebuild: 0, selfPairs: 0, query: 5 });
     vi.restoreAllMocks();
-    expect(treeOf(world).tree.validate()).toBeNull();
+    expect(validateTree(treeOf(world).tree)).toBeNull();
 
     for (const body of bodies) world.removeBody(body);
     for (const body of world.bodies.slice()) world.removeBody(body);
@@ -188,7 +191,7 @@ describe('the tree broadphase through big batches agrees with sweep-and-prune', 
         const hi = new Float64Array(n);
         for (let i = 0; i < 100; i += 1) {
           const id = ids[Math.floor(rand() * ids.length)]!;
-          bp.getBounds(id, lo, hi);
+          proxyBounds(bp as BroadphaseBase, id, lo, hi);
           const d = randomArray(rand, n, -1, 1);
           bp.moveProxy(
             id,
@@ -200,7 +203,7 @@ describe('the tree broadphase through big batches agrees with sweep-and-prune', 
       }
       expect(pairsOf(lanes[0]!.bp)).toEqual(pairsOf(lanes[1]!.bp));
       const tree = lanes[0]!.bp as TreeBroadphase;
-      expect(tree.tree.validate()).toBeNull();
+      expect(validateTree(tree.tree)).toBeNull();
       expect(tree.tree.leafCount).toBe(lanes[0]!.ids.length);
     }
   });

@@ -12,6 +12,10 @@ import type { RayCastSource } from './collision/query.js';
 import type { QueryShape } from './collision/query-shapes.js';
 import { checkWorld } from './world.js';
 import type { WorldBase } from './world.js';
+import type { Broadphase } from './collision/broadphase.js';
+import type { Pose } from './collision/manifold.js';
+import type { ProxyTables } from './contacts/contact-set.js';
+import type { AwakeSet } from './solver/islands.js';
 
 /** The first hit of {@link castRay}. */
 export interface WorldRayHit {
@@ -57,7 +61,7 @@ export function castRay(
   checkNumber('maxDistance', maxDistance, fn);
   if (!(maxDistance >= 0))
     throw new RangeError(`${fn}: argument 'maxDistance' must be a finite number >= 0 (m), got ${maxDistance}`);
-  const { broadphase, bodyOfProxy, shapeOfProxy, poseOfProxy, partOfProxy } = w.queryParts();
+  const { broadphase, bodyOfProxy, shapeOfProxy, poseOfProxy, partOfProxy } = queryParts(w);
   // Per proxy: a body's shape, or one part of a compound body, at its own pose.
   const source: RayCastSource = {
     shapeOf: (id) => shapeOfProxy[id] as unknown as QueryShape,
@@ -87,7 +91,7 @@ export function queryBox(world: WorldBase, min: ArrayLike<number>, max: ArrayLik
     if (min[i]! > max[i]!)
       throw new RangeError(`${fn}: argument 'min' must be <= 'max' on every axis (axis ${i}: ${min[i]} > ${max[i]})`);
   }
-  const { broadphase, bodyOfProxy } = w.queryParts();
+  const { broadphase, bodyOfProxy } = queryParts(w);
   const list = createIdList();
   queryOverlap(broadphase, min, max, list);
   const found: Body[] = [];
@@ -101,4 +105,66 @@ export function queryBox(world: WorldBase, min: ArrayLike<number>, max: ArrayLik
   }
   found.sort((a, b) => a.worldIndex - b.worldIndex);
   return found;
+}
+
+/** What the queries read of a world (its private parts; see queryParts). */
+interface WorldQueryParts {
+  readonly awake: AwakeSet;
+  boundsStale: boolean;
+  readonly reach: Float64Array;
+  readonly broadphase: Broadphase;
+  readonly bodyOfProxy: readonly (Body | null)[];
+  readonly proxyTables: ProxyTables;
+  compact(): void;
+  updatePose(body: Body): void;
+  moveProxy(body: Body): void;
+}
+
+/**
+ * @internal The broadphase of `world` with every box brought up to the bodies' poses (the step leaves the
+ * boxes of the last sub-step), and the body, shape, pose and part of each proxy id. A function,
+ * not a World method, so that a world without queries does not carry it.
+ */
+export function queryParts(world: WorldBase): {
+  readonly broadphase: Broadphase;
+  readonly bodyOfProxy: readonly (Body | null)[];
+  readonly shapeOfProxy: ProxyTables['shape'];
+  readonly poseOfProxy: readonly (Pose | null)[];
+  readonly partOfProxy: readonly number[];
+} {
+  const w = world as unknown as WorldQueryParts;
+  w.compact();
+  const awake = w.awake;
+  if (w.boundsStale || awake.movedCount !== 0) {
+    awake.sort();
+    for (let i = 0; i < awake.movedCount; i += 1) {
+      const body = awake.moved[i]!;
+      if (!body.poseDirty || body.worldIndex < 0) continue;
+      w.updatePose(body);
+      body.poseDirty = false;
+      w.reach[body.worldIndex] = 0;
+      w.moveProxy(body);
+    }
+    awake.clearMoved();
+    if (w.boundsStale) {
+      for (let b = 0; b < awake.count; b += 1) {
+        const body = awake.list[b]!;
+        if (body.poseDirty) {
+          w.updatePose(body);
+          body.poseDirty = false;
+        }
+        w.reach[body.worldIndex] = 0;
+        w.moveProxy(body);
+      }
+    }
+    w.boundsStale = false;
+  }
+  const t = w.proxyTables;
+  return {
+    broadphase: w.broadphase,
+    bodyOfProxy: w.bodyOfProxy,
+    shapeOfProxy: t.shape,
+    poseOfProxy: t.pose,
+    partOfProxy: t.part,
+  };
 }

@@ -11,9 +11,14 @@ import { computeBoundsUnchecked } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
-import { createPose } from './collision/manifold.js';
 import type { Pose } from './collision/manifold.js';
-import { buildNarrowphaseScratch, DEFAULT_FEATURE_TIE_TOLERANCE } from './collision/narrowphase-scratch.js';
+import {
+  DEFAULT_AXIS_TOLERANCE,
+  DEFAULT_CLIP_TOLERANCE,
+  DEFAULT_FEATURE_TIE_TOLERANCE,
+  DEFAULT_TORUS_RING_POINTS,
+  narrowphaseScratchOf,
+} from './collision/narrowphase-scratch.js';
 import type { BoxBoxSatKernel } from './collision/narrowphase-scratch.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './collision/broadphase-constants.js';
 import type { NarrowphaseScratch } from './collision/narrowphase-scratch.js';
@@ -23,7 +28,6 @@ import type { CollisionEvent } from './contacts/contact-events.js';
 import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from './contacts/contact-set.js';
 import type { ProxyTables } from './contacts/contact-set.js';
 import type { CompoundShape } from './shapes/compound.js';
-import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
 import type { ContactSolver } from './solver/contact-solver.js';
 import { AwakeSet, Islands } from './solver/islands.js';
@@ -51,10 +55,10 @@ import {
 import { integrateVelocities } from './integrator/velocities.js';
 import type { Joint, JointOwner } from './joints/joint.js';
 import type { JointSolver } from './joints/joint-solver.js';
+import type { WorldJoints } from './joints/world-joints.js';
 import { defaultParams, mergeParams, scaledParams } from './params.js';
 import { checkComponents, inputLimits } from './shapes/limits.js';
 import type { Params } from './params.js';
-import type { WorldParts } from './snapshot/world-parts.js';
 import { Float64Slab, slabPose } from './slab.js';
 
 /** Where the poses of bodies joining a world are cut from (see slab.ts: one buffer per pose cost more than the rest of addBody). */
@@ -281,6 +285,8 @@ export class WorldBase {
   private jointView: readonly Joint[] = Object.freeze([]);
   /** Made by the first joint added (Joint.createSolver), so a world without joints never loads it. */
   private jointSolver: JointSolver | null = null;
+  /** @internal The joint bookkeeping, brought by the first joint added (Joint.worldJoints), like the solver. */
+  private jointOps: WorldJoints | null = null;
   /** Joints that broke in this step, their events sent after it. */
   private readonly brokenJoints: Joint[] = [];
   private readonly jointOwner: JointOwner = {
@@ -292,8 +298,8 @@ export class WorldBase {
   };
   /** Per body (world index): the distance it can close in one sub-step (m), for speculative contacts. */
   private reach = new Float64Array(16);
-  /** The broadphase boxes lag the poses (a step ran since the last query). */
-  private boundsStale = false;
+  /** @internal Whether the broadphase boxes lag the poses (the queries and snapshots read it). */
+  boundsStale = false;
   private readonly events: ContactEvents;
   private readonly collisionEvent: CollisionEvent;
   /** The pair filter (setPairFilter), or null. Not saved in snapshots: a function is code, not state. */
@@ -378,9 +384,14 @@ export class WorldBase {
     this.constants = createStepConstants();
     const unit = params.lengthUnit;
     this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
-    this.narrowScratch = buildNarrowphaseScratch(kernels.boxBoxSat, D.n, {
-      featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit,
-    });
+    this.narrowScratch = narrowphaseScratchOf(
+      kernels.boxBoxSat,
+      D.n,
+      DEFAULT_AXIS_TOLERANCE,
+      DEFAULT_FEATURE_TIE_TOLERANCE * unit,
+      DEFAULT_CLIP_TOLERANCE,
+      DEFAULT_TORUS_RING_POINTS,
+    );
     this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
     this.contacts = new ContactSet(D.n, this.proxyTables);
     this.solverBodies = new SolverBodies(D);
@@ -594,16 +605,9 @@ export class WorldBase {
     const compound = body.shape.kind === 'compound' ? (body.shape as unknown as CompoundShape) : null;
     const partPoses: Pose[] = [];
     let finite = 0;
-    if (compound !== null) {
-      // One proxy per part: each part's box must be finite.
-      for (let i = 0; i < compound.partCount; i += 1) {
-        const pose = createPose(this.n);
-        this.partPose(body, compound, i, pose);
-        partPoses.push(pose);
-        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
-        for (let c = 0; c < this.n; c += 1) finite += sc.min[c]! * 0 + sc.max[c]! * 0;
-      }
-    } else if (isHalfSpace) this.halfSpacePlane(body);
+    // One proxy per part: each part's box must be finite.
+    if (compound !== null) finite = compound.worldOps.newPartPoses(this.n, body.pose, compound, sc.min, sc.max, partPoses);
+    else if (isHalfSpace) this.halfSpacePlane(body);
     else this.boundsOf(body);
     if (compound === null) finite = isHalfSpace ? sc.max[0]! * 0 : 0;
     for (let i = 0; i < this.n && compound === null; i += 1)
@@ -625,12 +629,8 @@ export class WorldBase {
     this.awake.sync(body);
     const bp = this.broadphase;
     if (compound !== null) {
-      const ids = new Int32Array(compound.partCount);
-      for (let i = 0; i < ids.length; i += 1) {
-        const pose = partPoses[i]!;
-        computeBoundsUnchecked(sc.min, sc.max, this.n, compound.parts[i] as unknown as QueryShape, pose.x, pose.M, 0);
-        ids[i] = bp.createProxy(sc.min, sc.max, body.motion === MOTION_STATIC);
-      }
+      const isStatic = body.motion === MOTION_STATIC;
+      const ids = compound.worldOps.createPartProxies(this.n, compound, partPoses, bp, isStatic, sc.min, sc.max);
       body.proxyId = ids[0]!;
       this.setBodyProxies(body, ids, partPoses);
       return body;
@@ -712,34 +712,12 @@ export class WorldBase {
    *   is not in this world, it is already in this or another world, or it broke. Nothing changes.
    */
   addConstraint<J extends Joint>(joint: J): J {
-    const fn = 'World.addConstraint';
     if (!isJoint(joint)) {
       throw new TypeError(
-        `${fn}: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
+        `World.addConstraint: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
       );
     }
-    if (joint.D.n !== this.n) {
-      throw new RangeError(`${fn}: argument 'joint' has n = ${joint.D.n} but the world has n = ${this.n}`);
-    }
-    if (joint.brokenFlag) throw new RangeError(`${fn}: argument 'joint' broke; build a new joint`);
-    if (joint.owner === this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is already in this world`);
-    if (joint.owner !== null)
-      throw new RangeError(`${fn}: argument 'joint' already belongs to another world; remove it there first`);
-    if (joint.a.owner !== this.owner) {
-      throw new RangeError(`${fn}: body 'a' (${joint.a.label}) of the joint is not in this world; add it first (World.addBody)`);
-    }
-    if (joint.b !== null && joint.b.owner !== this.owner) {
-      throw new RangeError(`${fn}: body 'b' (${joint.b.label}) of the joint is not in this world; add it first (World.addBody)`);
-    }
-    this.jointSolver ??= joint.createSolver(this.D);
-    joint.owner = this.jointOwner;
-    joint.lambda.fill(0);
-    this.jointList.push(joint);
-    this.jointView = Object.freeze(this.jointList.slice());
-    this.linkBodies(joint, 1);
-    joint.a.wake();
-    joint.b?.wake();
-    return joint;
+    return (this.jointOps ??= joint.worldJoints).add(this, joint);
   }
 
   /**
@@ -751,39 +729,9 @@ export class WorldBase {
     if (!isJoint(joint)) {
       throw new TypeError(`${fn}: argument 'joint' must be a joint, got ${joint === null ? 'null' : typeof joint}`);
     }
-    const index = joint.owner === this.jointOwner ? this.jointList.indexOf(joint) : -1;
-    if (index < 0) throw new RangeError(`${fn}: argument 'joint' is not in this world`);
-    this.detachJoint(joint, index);
-    joint.a.wake();
-    joint.b?.wake();
+    if (joint.owner !== this.jointOwner) throw new RangeError(`${fn}: argument 'joint' is not in this world`);
+    this.jointOps!.remove(this, joint);
     return this;
-  }
-
-  /** Takes a joint out of the list (it is known to be at `index`). */
-  private detachJoint(joint: Joint, index: number): void {
-    this.jointList.splice(index, 1);
-    this.jointView = Object.freeze(this.jointList.slice());
-    this.linkBodies(joint, -1);
-    joint.owner = null;
-  }
-
-  /** Counts the joint on its bodies (+1 or −1) and keeps their collision filter. */
-  private linkBodies(joint: Joint, sign: number): void {
-    const A = joint.a;
-    const B = joint.b;
-    A.jointCount += sign;
-    if (B === null) return;
-    B.jointCount += sign;
-    if (joint.collideConnected) return;
-    if (sign > 0) {
-      (A.jointPeers ??= []).push(B);
-      (B.jointPeers ??= []).push(A);
-    } else {
-      A.jointPeers!.splice(A.jointPeers!.indexOf(B), 1);
-      B.jointPeers!.splice(B.jointPeers!.indexOf(A), 1);
-      if (A.jointPeers!.length === 0) A.jointPeers = null;
-      if (B.jointPeers!.length === 0) B.jointPeers = null;
-    }
   }
 
   /**
@@ -850,7 +798,7 @@ export class WorldBase {
       this.contacts.updateManifolds(p, this.reach, this.narrowScratch, bp.tightMin, bp.tightMax, this.filterFn);
       this.solveContacts(p);
       const js = this.jointSolver;
-      if (js !== null && js.brokenCount > 0) this.breakJoints(js);
+      if (js !== null && js.brokenCount > 0) this.jointOps!.breakJoints(this, js);
       // (with the bodies the solver woke)
       awake.sort();
       awake.visitedBodies = awake.count;
@@ -873,49 +821,8 @@ export class WorldBase {
     this.clock[0] = this.clock[0]! + dt;
     this.clock[1] = this.clock[1]! + 1;
     if (this.events.beginCount > 0 || this.events.endCount > 0) this.dispatchEvents();
-    if (this.brokenJoints.length > 0) this.dispatchBroken();
+    if (this.brokenJoints.length > 0) this.jointOps!.dispatchBroken(this);
     return this;
-  }
-
-  // ---- snapshots: snapshotWorld / restoreWorld (snapshot/snapshot.ts, docs/engine.md) ----
-
-  /** @internal The private parts the snapshot code (snapshot/) reads and restores. */
-  snapshotParts(): WorldParts {
-    this.compact();
-    // A restore sets the bodies' sleep flags and poses itself: the awake set is rebuilt after it.
-    this.awake.stale = true;
-    return {
-      clock: this.clock,
-      reach: this.reach,
-      boundsStale: this.boundsStale,
-      broadphase: this.broadphase as BroadphaseBase,
-      bodyOfProxy: this.bodyOfProxy,
-      partProxies: this.partProxies,
-      setBodyProxies: (body: Body, ids: Int32Array | null): void => {
-        const compound = ids === null ? null : (body.shape as unknown as CompoundShape);
-        const poses: Pose[] | null = compound === null ? null : [];
-        if (compound !== null) {
-          for (let i = 0; i < compound.partCount; i += 1) {
-            const pose = createPose(this.n);
-            this.partPose(body, compound, i, pose);
-            poses!.push(pose);
-          }
-        }
-        this.setBodyProxies(body, ids, poses);
-      },
-      clearProxyTables: (): void => {
-        this.bodyOfProxy.length = 0;
-        this.partProxies.length = 0;
-        this.proxyTables.shape.length = 0;
-        this.proxyTables.pose.length = 0;
-        this.proxyTables.part.length = 0;
-      },
-      contacts: this.contacts,
-      events: this.events,
-      setBoundsStale: (stale: boolean): void => {
-        this.boundsStale = stale;
-      },
-    };
   }
 
   // ---- the stages behind step() ----
@@ -995,38 +902,9 @@ export class WorldBase {
     const id = body.proxyId;
     if (id < 0) return;
     const ids = this.partProxies[id];
-    if (ids !== undefined && ids !== null) this.updatePartPoses(body, ids);
-  }
-
-  /** The poses of a compound body's parts (proxies `ids`) from the body's pose. */
-  private updatePartPoses(body: Body, ids: Int32Array): void {
-    const compound = body.shape as unknown as CompoundShape;
-    const poses = this.proxyTables.pose;
-    for (let i = 0; i < ids.length; i += 1) this.partPose(body, compound, i, poses[ids[i]!]!);
-  }
-
-  /**
-   * The world pose of part `i` of a compound body into `out`: x_i = x + M·offset_i,
-   * M_i = M·rotation_i (the body's pose composed with the part's place in the body).
-   */
-  private partPose(body: Body, compound: CompoundShape, i: number, out: Pose): void {
-    const n = this.n;
-    const pose = body.pose!;
-    const x = pose.x;
-    const M = pose.M;
-    const off = compound.partOffsets;
-    const rot = compound.partRotations;
-    const o = i * n;
-    const q = i * n * n;
-    for (let a = 0; a < n; a += 1) {
-      let s = x[a]!;
-      for (let c = 0; c < n; c += 1) s += M[a * n + c]! * off[o + c]!;
-      out.x[a] = s;
-      for (let b = 0; b < n; b += 1) {
-        let t = 0;
-        for (let c = 0; c < n; c += 1) t += M[a * n + c]! * rot[q + c * n + b]!;
-        out.M[a * n + b] = t;
-      }
+    if (ids !== undefined && ids !== null) {
+      const compound = body.shape as unknown as CompoundShape;
+      compound.worldOps.updatePartPoses(this.n, pose, compound, ids, this.proxyTables.pose);
     }
   }
 
@@ -1116,7 +994,19 @@ export class WorldBase {
   private moveProxy(body: Body): void {
     const ids = this.partProxies[body.proxyId];
     if (ids !== undefined && ids !== null) {
-      this.moveParts(body, ids);
+      const { min, max } = this.scratch;
+      const t = this.proxyTables;
+      (body.shape as unknown as CompoundShape).worldOps.moveParts(
+        this.n,
+        ids,
+        t.shape,
+        t.pose,
+        this.reach,
+        body.worldIndex,
+        min,
+        max,
+        this.broadphase,
+      );
     } else if (body.shape.kind === 'halfspace') {
       this.halfSpacePlane(body);
       this.broadphase.moveHalfSpace(body.proxyId, this.scratch.normal, this.scratch.max[0]!);
@@ -1127,25 +1017,6 @@ export class WorldBase {
       for (let i = 0; i < this.n; i += 1) finite += min[i]! * 0 + max[i]! * 0;
       // A body at the edge of overflow keeps its last box; its own step then fails by name.
       if (finite === 0) this.broadphase.moveProxy(body.proxyId, min, max);
-    }
-  }
-
-  /** Moves the proxies of a compound body's parts to their poses, each box grown by the body's reach. */
-  private moveParts(body: Body, ids: Int32Array): void {
-    const { min, max } = this.scratch;
-    const grow = this.reach[body.worldIndex]!;
-    const t = this.proxyTables;
-    for (let p = 0; p < ids.length; p += 1) {
-      const id = ids[p]!;
-      const pose = t.pose[id]!;
-      computeBoundsUnchecked(min, max, this.n, t.shape[id] as unknown as QueryShape, pose.x, pose.M, 0);
-      let finite = 0;
-      for (let i = 0; i < this.n; i += 1) {
-        min[i] = min[i]! - grow;
-        max[i] = max[i]! + grow;
-        finite += min[i]! * 0 + max[i]! * 0;
-      }
-      if (finite === 0) this.broadphase.moveProxy(id, min, max);
     }
   }
 
@@ -1243,27 +1114,6 @@ export class WorldBase {
     sb.writeBack();
   }
 
-  /** The joints the solver found over their break load leave the world (events after the step). */
-  private breakJoints(js: JointSolver): void {
-    for (let i = 0; i < js.brokenCount; i += 1) {
-      const joint = js.broken[i]!;
-      const index = this.jointList.indexOf(joint);
-      if (index < 0) continue;
-      joint.brokenFlag = true;
-      this.detachJoint(joint, index);
-      joint.a.wake();
-      joint.b?.wake();
-      this.brokenJoints.push(joint);
-    }
-    js.brokenCount = 0;
-  }
-
-  /** Sends the 'broken' events of this step. */
-  private dispatchBroken(): void {
-    const list = this.brokenJoints.splice(0, this.brokenJoints.length);
-    for (const joint of list) joint.emitBroken();
-  }
-
   /** Stage 6a: begin / end events from the touching flags of this sub-step. */
   private recordEvents(): void {
     const contacts = this.contacts;
@@ -1324,59 +1174,6 @@ export class WorldBase {
         e.body.emitCollision(e);
       }
     }
-  }
-
-  /** Brings every broadphase box up to the bodies' poses (before a query). */
-  private refreshBounds(): void {
-    this.compact();
-    const awake = this.awake;
-    if (!this.boundsStale && awake.movedCount === 0) return;
-    awake.sort();
-    for (let i = 0; i < awake.movedCount; i += 1) {
-      const body = awake.moved[i]!;
-      if (!body.poseDirty || body.worldIndex < 0) continue;
-      this.updatePose(body);
-      body.poseDirty = false;
-      this.reach[body.worldIndex] = 0;
-      this.moveProxy(body);
-    }
-    awake.clearMoved();
-    if (this.boundsStale) {
-      for (let b = 0; b < awake.count; b += 1) {
-        const body = awake.list[b]!;
-        if (body.poseDirty) {
-          this.updatePose(body);
-          body.poseDirty = false;
-        }
-        this.reach[body.worldIndex] = 0;
-        this.moveProxy(body);
-      }
-    }
-    this.boundsStale = false;
-  }
-
-  // ---- queries: castRay / queryBox (queries.ts) ----
-
-  /**
-   * @internal For the queries of queries.ts: the broadphase with every box brought up to the
-   * bodies' poses, and the body of each proxy id.
-   */
-  queryParts(): {
-    readonly broadphase: Broadphase;
-    readonly bodyOfProxy: readonly (Body | null)[];
-    readonly shapeOfProxy: readonly (Shape | null)[];
-    readonly poseOfProxy: readonly (Pose | null)[];
-    readonly partOfProxy: readonly number[];
-  } {
-    this.refreshBounds();
-    const t = this.proxyTables;
-    return {
-      broadphase: this.broadphase,
-      bodyOfProxy: this.bodyOfProxy,
-      shapeOfProxy: t.shape,
-      poseOfProxy: t.pose,
-      partOfProxy: t.part,
-    };
   }
 
   /** Undoes the current step and throws the error that names the body. */

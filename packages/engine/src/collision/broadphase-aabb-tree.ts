@@ -257,75 +257,6 @@ export class DynamicAabbTree {
     return this.hitCount;
   }
 
-  /**
-   * Walks the leaves whose box the ray o + t·d meets for t in [0, limit], shrinking the limit
-   * as hits come in: `cast(user, limit)` returns the distance of its own hit (>= 0, used as the
-   * new limit) or a negative number for none. Returns the smallest hit distance, or −1.
-   */
-  rayCast(
-    o: ArrayLike<number>,
-    d: ArrayLike<number>,
-    maxDistance: number,
-    cast: (user: number, limit: number) => number,
-  ): number {
-    this.nodesVisited = 0;
-    if (this.root === NULL) return -1;
-    const n = this.n;
-    let limit = maxDistance;
-    let best = -1;
-    let top = 0;
-    this.stack[top++] = this.root;
-    while (top > 0) {
-      const node = this.stack[--top]!;
-      this.nodesVisited += 1;
-      if (!rayHitsBox(n, o, d, limit, this.nodeMin, this.nodeMax, node * n)) continue;
-      if (this.height[node] === 0) {
-        const t = cast(this.userId[node]!, limit);
-        if (t >= 0 && t <= limit) {
-          limit = t;
-          best = t;
-        }
-      } else {
-        if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
-        this.stack[top++] = this.child1[node]!;
-        this.stack[top++] = this.child2[node]!;
-      }
-    }
-    return best;
-  }
-
-  /** Checks the tree's invariants (parents, heights, boxes containing children); for tests. */
-  validate(): string | null {
-    if (this.root === NULL) return null;
-    if (this.parent[this.root] !== NULL) return 'root has a parent';
-    const n = this.n;
-    let count = 0;
-    let top = 0;
-    this.stack[top++] = this.root;
-    while (top > 0) {
-      const node = this.stack[--top]!;
-      count += 1;
-      if (this.height[node] === 0) continue;
-      const c1 = this.child1[node]!;
-      const c2 = this.child2[node]!;
-      if (this.parent[c1] !== node || this.parent[c2] !== node) return `bad parent link at ${node}`;
-      const h = 1 + Math.max(this.height[c1]!, this.height[c2]!);
-      if (this.height[node] !== h) return `bad height at ${node}`;
-      for (let k = 0; k < n; k += 1) {
-        const lo = Math.min(this.nodeMin[c1 * n + k]!, this.nodeMin[c2 * n + k]!);
-        const hi = Math.max(this.nodeMax[c1 * n + k]!, this.nodeMax[c2 * n + k]!);
-        if (this.nodeMin[node * n + k] !== lo || this.nodeMax[node * n + k] !== hi) {
-          return `box of ${node} is not the union of its children`;
-        }
-      }
-      if (top + 2 > this.stack.length) this.stack = grow(this.stack, top);
-      this.stack[top++] = c1;
-      this.stack[top++] = c2;
-    }
-    if (count !== this.nodeCount) return `reachable ${count} != allocated ${this.nodeCount}`;
-    return null;
-  }
-
   private linkFree(from: number, to: number): void {
     for (let i = from; i < to - 1; i += 1) {
       this.parent[i] = i + 1;
@@ -536,44 +467,6 @@ export class DynamicAabbTree {
     this.height[up] = 1 + Math.max(this.height[iA]!, this.height[keep]!);
     return up;
   }
-}
-
-/**
- * Slab test: does the ray o + t·d, t in [0, limit], meet the box at `base` of (boxMin, boxMax)?
- * Closed intervals; an axis with d = 0 needs o inside the slab.
- */
-export function rayHitsBox(
-  n: number,
-  o: ArrayLike<number>,
-  d: ArrayLike<number>,
-  limit: number,
-  boxMin: Float64Array,
-  boxMax: Float64Array,
-  base: number,
-): boolean {
-  let t0 = 0;
-  let t1 = limit;
-  for (let k = 0; k < n; k += 1) {
-    const dk = d[k]!;
-    const ok = o[k]!;
-    const lo = boxMin[base + k]!;
-    const hi = boxMax[base + k]!;
-    if (dk === 0) {
-      if (ok < lo || ok > hi) return false;
-      continue;
-    }
-    let a = (lo - ok) / dk;
-    let b = (hi - ok) / dk;
-    if (a > b) {
-      const s = a;
-      a = b;
-      b = s;
-    }
-    if (a > t0) t0 = a;
-    if (b < t1) t1 = b;
-    if (t0 > t1) return false;
-  }
-  return true;
 }
 
 function grow(a: Int32Array, used: number): Int32Array {

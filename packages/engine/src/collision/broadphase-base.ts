@@ -3,11 +3,10 @@
  * kept aside, and the sorted pair set with its allocation-free update. A subclass supplies the
  * box structure (the candidate search, box queries and ray walks).
  */
-import type { Broadphase, BroadphaseOptions, BroadphaseStats, ProxyRayCast, ProxyVisitor } from './broadphase.js';
+import type { Broadphase, BroadphaseOptions, BroadphaseStats } from './broadphase.js';
 import { DEFAULT_BROADPHASE_MARGIN } from './broadphase-constants.js';
-import { rayHitsBox } from './broadphase-aabb-tree.js';
 import { sortKeys } from './broadphase-sort.js';
-import { checkDimension, checkDirection, checkFiniteArray, checkNumber, checkOutput } from './query-checks.js';
+import { checkDimension, checkDirection, checkFiniteArray, checkNumber } from './query-checks.js';
 
 /** Proxy flag bit: the id is in use. */
 export const ALIVE = 1;
@@ -159,10 +158,11 @@ export abstract class BroadphaseBase implements Broadphase {
   protected abstract onCapacity(capacity: number): void;
   /** Adds the box–box candidate pairs of this update through {@link addCandidate}. */
   protected abstract collectBoxCandidates(): void;
-  /** Calls visit(id) for box proxies whose fat box overlaps [qMin, qMax]; false stops. Returns false if stopped. */
+  /**
+   * Calls visit(id) for box proxies whose fat box overlaps [qMin, qMax]; false stops. Returns
+   * false if stopped. (The ray walk over the fat boxes is `castFat` of broadphase-queries.ts.)
+   */
   protected abstract visitFat(visit: (id: number) => boolean): boolean;
-  /** Ray walk over box proxies' fat boxes along (rayO, rayD) up to `limit`; see ProxyRayCast. */
-  protected abstract castFat(limit: number, cast: ProxyRayCast): number;
 
   // ---- proxies ----
 
@@ -283,43 +283,6 @@ export abstract class BroadphaseBase implements Broadphase {
     if (isStatic) this.flags[id]! |= STATIC;
     else this.flags[id]! &= ~STATIC;
     this.markMoved(id);
-  }
-
-  isAlive(id: number): boolean {
-    return Number.isInteger(id) && id >= 0 && id < this.highWater && (this.flags[id]! & ALIVE) !== 0;
-  }
-
-  isAwake(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & AWAKE) !== 0;
-  }
-
-  isStatic(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & STATIC) !== 0;
-  }
-
-  isHalfSpace(id: number): boolean {
-    this.checkLive(id, 'id');
-    return (this.flags[id]! & HALFSPACE) !== 0;
-  }
-
-  getFatBounds(id: number, outMin: Float64Array, outMax: Float64Array): void {
-    this.checkBoxProxy(id);
-    checkOutput(outMin, this.n, 'outMin');
-    checkOutput(outMax, this.n, 'outMax');
-    const b = id * this.n;
-    outMin.set(this.fatMin.subarray(b, b + this.n));
-    outMax.set(this.fatMax.subarray(b, b + this.n));
-  }
-
-  getBounds(id: number, outMin: Float64Array, outMax: Float64Array): void {
-    this.checkBoxProxy(id);
-    checkOutput(outMin, this.n, 'outMin');
-    checkOutput(outMax, this.n, 'outMax');
-    const b = id * this.n;
-    outMin.set(this.tightMin.subarray(b, b + this.n));
-    outMax.set(this.tightMax.subarray(b, b + this.n));
   }
 
   // ---- the update ----
@@ -532,123 +495,6 @@ export abstract class BroadphaseBase implements Broadphase {
     this.dropped[this.droppedCount++] = src[at]!;
   }
 
-  // ---- snapshots ----
-
-  /** @internal The state that decides the next updates (views of the live parts, not copies). */
-  snapshotState(): BroadphaseState {
-    const hw = this.highWater;
-    const n = this.n;
-    return {
-      highWater: hw,
-      liveCount: this.liveCount,
-      flags: this.flags.subarray(0, hw),
-      tightMin: this.tightMin.subarray(0, hw * n),
-      tightMax: this.tightMax.subarray(0, hw * n),
-      fatMin: this.fatMin.subarray(0, hw * n),
-      fatMax: this.fatMax.subarray(0, hw * n),
-      planeNormal: this.planeNormal.subarray(0, hw * n),
-      planeOffset: this.planeOffset.subarray(0, hw),
-      moved: this.moved.subarray(0, this.movedCount),
-      halfSpaces: this.halfSpaces.subarray(0, this.halfSpaceCount),
-      freeIds: this.freeIds.subarray(0, this.freeCount),
-      keys: this.keys.subarray(0, this.keyCount),
-    };
-  }
-
-  /**
-   * @internal Replaces the whole state by `s` (as {@link snapshotState} gives it; the caller
-   * checked its consistency) and rebuilds the box structure from the fat boxes. Copies.
-   */
-  restoreState(s: BroadphaseState): void {
-    for (let id = 0; id < this.highWater; id += 1) {
-      if ((this.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) this.onRemove(id);
-    }
-    while (this.capacity < s.highWater) this.grow();
-    this.flags.fill(0);
-    this.flags.set(s.flags);
-    this.tightMin.set(s.tightMin);
-    this.tightMax.set(s.tightMax);
-    this.fatMin.set(s.fatMin);
-    this.fatMax.set(s.fatMax);
-    this.planeNormal.set(s.planeNormal);
-    this.planeOffset.set(s.planeOffset);
-    this.highWater = s.highWater;
-    this.liveCount = s.liveCount;
-    if (this.moved.length < s.moved.length) this.moved = new Int32Array(growLength(this.moved.length, s.moved.length));
-    this.moved.set(s.moved);
-    this.movedCount = s.moved.length;
-    if (this.halfSpaces.length < s.halfSpaces.length)
-      this.halfSpaces = new Int32Array(growLength(this.halfSpaces.length, s.halfSpaces.length));
-    this.halfSpaces.set(s.halfSpaces);
-    this.halfSpaceCount = s.halfSpaces.length;
-    this.freeIds.set(s.freeIds);
-    this.freeCount = s.freeIds.length;
-    if (this.keys.length < s.keys.length) {
-      this.keys = new Float64Array(growLength(this.keys.length, s.keys.length));
-      this.keysNext = new Float64Array(this.keys.length);
-    }
-    this.keys.set(s.keys);
-    this.keyCount = s.keys.length;
-    this.pairCount = 0;
-    this.addedCount = 0;
-    this.removedCount = 0;
-    this.reportStale = true;
-    for (let id = 0; id < s.highWater; id += 1) {
-      if ((this.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) this.onInsert(id);
-    }
-  }
-
-  // ---- queries ----
-
-  queryBox(min: ArrayLike<number>, max: ArrayLike<number>, visit: ProxyVisitor): void {
-    this.checkBox(min, max, 'min', 'max');
-    if (typeof visit !== 'function') throw new TypeError('visit must be a function');
-    const n = this.n;
-    for (let k = 0; k < n; k += 1) {
-      this.qMin[k] = min[k]!;
-      this.qMax[k] = max[k]!;
-    }
-    for (let i = 0; i < this.halfSpaceCount; i += 1) {
-      const h = this.halfSpaces[i]!;
-      if (this.boxReachesPlane(this.qMin, this.qMax, 0, h) && visit(h) === false) return;
-    }
-    this.visitFat((id) => {
-      const b = id * n;
-      for (let k = 0; k < n; k += 1) {
-        if (this.tightMin[b + k]! > this.qMax[k]! || this.qMin[k]! > this.tightMax[b + k]!) return true;
-      }
-      return visit(id) !== false;
-    });
-  }
-
-  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number, cast: ProxyRayCast): number {
-    checkFiniteArray(origin, this.n, 'origin');
-    checkDirection(direction, this.n, 'direction');
-    checkNumber(maxDistance, 'maxDistance', 0, true);
-    if (typeof cast !== 'function') throw new TypeError('cast must be a function');
-    const n = this.n;
-    let s = 0;
-    for (let k = 0; k < n; k += 1) s += direction[k]! * direction[k]!;
-    const inv = 1 / Math.sqrt(s);
-    for (let k = 0; k < n; k += 1) {
-      this.rayO[k] = origin[k]!;
-      this.rayD[k] = direction[k]! * inv;
-    }
-    let limit = maxDistance;
-    let best = -1;
-    for (let i = 0; i < this.halfSpaceCount; i += 1) {
-      const t = cast(this.halfSpaces[i]!, limit);
-      if (t >= 0 && t <= limit) {
-        limit = t;
-        best = t;
-      }
-    }
-    const t = this.castFat(limit, (id, lim) =>
-      rayHitsBox(n, this.rayO, this.rayD, lim, this.tightMin, this.tightMax, id * n) ? cast(id, lim) : -1,
-    );
-    return t >= 0 ? t : best;
-  }
-
   // ---- internals ----
 
   private fatten(id: number): void {
@@ -730,7 +576,7 @@ export abstract class BroadphaseBase implements Broadphase {
 }
 
 /** A length at least `needed`, doubling from `current`. */
-function growLength(current: number, needed: number): number {
+export function growLength(current: number, needed: number): number {
   let c = Math.max(current, 8);
   while (c < needed) c *= 2;
   return c;

@@ -7,7 +7,7 @@
  * the whole scene each step, not what moved.
  */
 import type { BroadphaseOptions, ProxyRayCast } from './broadphase.js';
-import { rayHitsBox } from './broadphase-aabb-tree.js';
+import { rayHitsBox } from './broadphase-queries.js';
 import { ALIVE, BroadphaseBase, HALFSPACE } from './broadphase-base.js';
 import { heapSortIdsByKey, insertionSortIdsByKey } from './broadphase-sort.js';
 

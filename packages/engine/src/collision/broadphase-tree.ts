@@ -9,7 +9,7 @@
  * their refits, and removing them all one walk of the tree (issue 19). The tree's shape never
  * shows in the results: pairs are sorted, and queries order their own results.
  */
-import type { BroadphaseOptions, ProxyRayCast } from './broadphase.js';
+import type { BroadphaseOptions } from './broadphase.js';
 import { DynamicAabbTree } from './broadphase-aabb-tree.js';
 import { TreeSelfPairs } from './broadphase-tree-pairs.js';
 import { ALIVE, BroadphaseBase, HALFSPACE, MOVED } from './broadphase-base.js';
@@ -174,11 +174,6 @@ export class TreeBroadphase extends BroadphaseBase {
     const hits = this.boxTree.hits;
     for (let j = 0; j < count; j += 1) if (!visit(hits[j]!)) return false;
     return true;
-  }
-
-  protected castFat(limit: number, cast: ProxyRayCast): number {
-    this.flushPending();
-    return this.boxTree.rayCast(this.rayO, this.rayD, limit, cast);
   }
 }
 

@@ -92,31 +92,8 @@ export interface Broadphase {
   setAwake(id: number, awake: boolean): void;
   /** Makes a box proxy static or dynamic (it counts as moved, so its pairs are rebuilt). */
   setStatic(id: number, isStatic: boolean): void;
-  /** True if `id` is a live proxy. */
-  isAlive(id: number): boolean;
-  /** True if the live proxy `id` is awake. */
-  isAwake(id: number): boolean;
-  /** True if the live proxy `id` is static (half-spaces are). */
-  isStatic(id: number): boolean;
-  /** True if the live proxy `id` is a half-space. */
-  isHalfSpace(id: number): boolean;
-  /** Copies the fattened box of a box proxy into outMin/outMax (n numbers each). */
-  getFatBounds(id: number, outMin: Float64Array, outMax: Float64Array): void;
-  /** Copies the tight box (the bounds last given) of a box proxy into outMin/outMax. */
-  getBounds(id: number, outMin: Float64Array, outMax: Float64Array): void;
   /** Brings the pair set up to date; returns {@link pairCount}. Allocates nothing in steady state. */
   updatePairs(): number;
-  /**
-   * Visits every proxy whose tight box overlaps [min, max] (closed), and every half-space whose
-   * solid side the box reaches. Order is unspecified; do not call the broadphase from `visit`.
-   */
-  queryBox(min: ArrayLike<number>, max: ArrayLike<number>, visit: ProxyVisitor): void;
-  /**
-   * Walks the proxies whose tight box the ray origin + t·d̂ meets, t in [0, maxDistance]
-   * (d̂ = direction normalised), half-spaces first, pruning with the closest hit so far.
-   * Returns the closest distance reported by `cast`, or −1.
-   */
-  rayCast(origin: ArrayLike<number>, direction: ArrayLike<number>, maxDistance: number, cast: ProxyRayCast): number;
 }
 
 /** Which structure a broadphase uses. */

@@ -9,6 +9,16 @@ export type { Broadphase, BroadphaseOptions, BroadphaseStats, BroadphaseKind, Pr
 export { TreeBroadphase } from './broadphase-tree.js';
 export { SweepAndPruneBroadphase } from './broadphase-sap.js';
 export {
+  broadphaseQueryBox,
+  broadphaseRayCast,
+  proxyBounds,
+  proxyIsAlive,
+  proxyIsAwake,
+  proxyIsHalfSpace,
+  proxyIsStatic,
+  validateTree,
+} from './broadphase-queries.js';
+export {
   rayCastShape,
   rayCastShapeUnchecked,
   createRayHit,

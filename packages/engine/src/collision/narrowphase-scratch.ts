@@ -234,6 +234,22 @@ export function buildNarrowphaseScratch(
   if (ring < 3 || ring > 32) {
     throw new RangeError(`createNarrowphaseScratch: 'options.torusRingPoints' must be in 3..32, got ${ring}`);
   }
+  return narrowphaseScratchOf(boxBoxSat, n, axisTolerance, featureTieTolerance, clipTolerance, ring);
+}
+
+/**
+ * @internal {@link buildNarrowphaseScratch} with its tolerances given (as that function checks
+ * them; the world gives its own, already valid): only n is checked.
+ */
+export function narrowphaseScratchOf(
+  boxBoxSat: BoxBoxSatKernel,
+  n: number,
+  axisTolerance: number,
+  featureTieTolerance: number,
+  clipTolerance: number,
+  ring: number,
+): NarrowphaseScratch {
+  checkNarrowphaseDimension(n, 'n');
   // keeps the hot path's shape reads megamorphic (see shape-kind.ts), in case V8 dropped them
   trainShapeAccessors();
   const d = n - 1;

@@ -3,6 +3,8 @@
  * a ray against the posed shapes of the proxies. The world wraps these with its bodies.
  */
 import type { Broadphase, ProxyVisitor } from './broadphase.js';
+import type { BroadphaseBase } from './broadphase-base.js';
+import { broadphaseQueryBox, broadphaseRayCast } from './broadphase-queries.js';
 import { checkDirection, checkFiniteArray, checkNumber } from './query-checks.js';
 import type { QueryShape } from './query-shapes.js';
 import { DEFAULT_TORUS_RAY_STEPS, DEFAULT_TORUS_RAY_TOLERANCE, rayCastShapeUnchecked } from './raycast.js';
@@ -36,7 +38,7 @@ export function queryOverlap(
 ): number {
   if (typeof out === 'function') {
     let count = 0;
-    broadphase.queryBox(min, max, (id) => {
+    broadphaseQueryBox(broadphase as BroadphaseBase, min, max, (id) => {
       count += 1;
       return out(id);
     });
@@ -46,7 +48,7 @@ export function queryOverlap(
     throw new TypeError('out must be an IdList or a callback');
   }
   out.count = 0;
-  broadphase.queryBox(min, max, (id) => {
+  broadphaseQueryBox(broadphase as BroadphaseBase, min, max, (id) => {
     if (out.count === out.ids.length) {
       const grown = new Int32Array(out.ids.length * 2);
       grown.set(out.ids);
@@ -127,7 +129,7 @@ export function rayCastClosest(
   const scratch: RayHit = { distance: -1, point: new Float64Array(n), normal: new Float64Array(n) };
   out.id = -1;
   out.distance = -1;
-  broadphase.rayCast(origin, d, maxDistance, (id, limit) => {
+  broadphaseRayCast(broadphase as BroadphaseBase, origin, d, maxDistance, (id, limit) => {
     const shape = source.shapeOf(id);
     const tol =
       torus.tolerance ?? (shape.kind === 'torus' ? DEFAULT_TORUS_RAY_TOLERANCE * (shape.majorRadius + shape.minorRadius) : 0);

@@ -1,6 +1,7 @@
 /**
  * Tiny dense solvers for the narrowphase (systems of at most 9×9). Unchecked, allocation-free.
- * Matrices are row-major with row stride m.
+ * Matrices are row-major with row stride m. One code for both forms (a matrix alone, or one of
+ * several side by side): the offsets add integers, so the results are the same bits.
  *
  * @module
  */
@@ -11,56 +12,12 @@
  * largest absolute entry, or the matrix is zero.
  */
 export function luFactor(m: number, a: Float64Array, piv: Int32Array, tolerance: number): boolean {
-  let scale = 0;
-  for (let i = 0; i < m * m; i += 1) scale = Math.max(scale, Math.abs(a[i]));
-  if (!(scale > 0)) return m === 0;
-  const limit = tolerance * scale;
-  for (let i = 0; i < m; i += 1) piv[i] = i;
-  for (let col = 0; col < m; col += 1) {
-    let p = col;
-    let best = Math.abs(a[col * m + col]);
-    for (let row = col + 1; row < m; row += 1) {
-      const v = Math.abs(a[row * m + col]);
-      if (v > best) {
-        best = v;
-        p = row;
-      }
-    }
-    if (!(best > limit)) return false;
-    if (p !== col) {
-      for (let c = 0; c < m; c += 1) {
-        const t = a[col * m + c];
-        a[col * m + c] = a[p * m + c];
-        a[p * m + c] = t;
-      }
-      const t = piv[col];
-      piv[col] = piv[p];
-      piv[p] = t;
-    }
-    const d = a[col * m + col];
-    for (let row = col + 1; row < m; row += 1) {
-      const f = a[row * m + col] / d;
-      a[row * m + col] = f;
-      if (f === 0) continue;
-      for (let c = col + 1; c < m; c += 1) a[row * m + c] -= f * a[col * m + c];
-    }
-  }
-  return true;
+  return luFactorAt(m, a, 0, piv, 0, tolerance);
 }
 
 /** Solves a x = b with the factors of {@link luFactor}; `b` is read, `x` written (distinct arrays). */
 export function luSolve(m: number, a: Float64Array, piv: Int32Array, b: ArrayLike<number>, x: Float64Array): Float64Array {
-  for (let i = 0; i < m; i += 1) {
-    let s = b[piv[i]];
-    for (let c = 0; c < i; c += 1) s -= a[i * m + c] * x[c];
-    x[i] = s;
-  }
-  for (let i = m - 1; i >= 0; i -= 1) {
-    let s = x[i];
-    for (let c = i + 1; c < m; c += 1) s -= a[i * m + c] * x[c];
-    x[i] = s / a[i * m + i];
-  }
-  return x;
+  return luSolveAt(m, a, 0, piv, 0, b, x);
 }
 
 /**

@@ -12,6 +12,8 @@ import type { Dims } from '@physin/algebra';
 import { Body, MOTION_STATIC } from '../body.js';
 import { checkJointOptionNames, readBoolean, readNonNegative, readVector } from './options.js';
 import { JointSolver } from './joint-solver.js';
+import { worldJoints } from './world-joints.js';
+import type { WorldJoints } from './world-joints.js';
 
 /** The options every joint takes. */
 export interface JointOptions {
@@ -337,6 +339,14 @@ export abstract class Joint {
    */
   createSolver(D: Dims): JointSolver {
     return new JointSolver(D);
+  }
+
+  /**
+   * @internal The world's bookkeeping of its joints (adding, removing, breaking), reached through
+   * the joints as the solver is, so a scene without joints does not carry it either.
+   */
+  get worldJoints(): WorldJoints {
+    return worldJoints;
   }
 
   /** @internal Hook: the anchors changed (setAnchors). */

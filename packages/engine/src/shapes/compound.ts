@@ -3,6 +3,8 @@ import type { Dims } from '@physin/algebra';
 import { ROTOR_INPUT_TOLERANCE } from '../params.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
 import { checkDims, checkVector } from './checks.js';
+import { compoundWorldOps } from './compound-world.js';
+import type { CompoundWorldOps } from './compound-world.js';
 import { checkComponents, inputLimits } from './limits.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import { principalFrame } from './principal-frame.js';
@@ -62,6 +64,8 @@ export interface CompoundShape extends Shape {
   readonly volume: number;
   /** The largest distance of a point of any part from the centre of mass (m). */
   readonly boundingRadius: number;
+  /** @internal What a world does with a compound body (part poses and proxies; compound-world.ts). */
+  readonly worldOps: CompoundWorldOps;
 }
 
 const PART_KEYS = new Set(['shape', 'position', 'rotor']);
@@ -271,6 +275,7 @@ export function Compound(D: Dims, parts: readonly CompoundPart[]): CompoundShape
     frameRotor,
     volume,
     boundingRadius,
+    worldOps: compoundWorldOps,
     massProperties(Dm: Dims, mass: number): MassProperties {
       const c = checkMassArguments('Compound.massProperties', Dm, mass, n);
       return diagonalMassProperties(c, volume, unitCovariance, mass);

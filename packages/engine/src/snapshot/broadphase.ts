@@ -15,7 +15,7 @@
  * @module
  */
 import type { BroadphaseBase, BroadphaseState } from '../collision/broadphase-base.js';
-import { ALIVE, HALFSPACE } from '../collision/broadphase-base.js';
+import { ALIVE, HALFSPACE, growLength } from '../collision/broadphase-base.js';
 import { PAIR_KEY_SCALE } from '../contacts/contact-set.js';
 import type { SnapshotReader } from './reader.js';
 import type { SnapshotWriter } from './writer.js';
@@ -23,7 +23,7 @@ import type { SnapshotWriter } from './writer.js';
 /** Writes the broadphase's state (see the module). */
 export function writeBroadphase(w: SnapshotWriter, bp: BroadphaseBase): void {
   const n = bp.n;
-  const s = bp.snapshotState();
+  const s = broadphaseState(bp);
   const hw = s.highWater;
   w.f64(bp.margin);
   w.u32(hw);
@@ -115,5 +115,102 @@ export function readBroadphase(r: SnapshotReader, bp: BroadphaseBase): void {
     freeIds,
     keys,
   };
-  bp.restoreState(state);
+  restoreBroadphaseState(bp, state);
+}
+
+/** What the snapshot reads and writes of a broadphase (its protected and private parts). */
+interface BaseParts {
+  readonly n: number;
+  highWater: number;
+  liveCount: number;
+  capacity: number;
+  flags: Uint8Array;
+  tightMin: Float64Array;
+  tightMax: Float64Array;
+  fatMin: Float64Array;
+  fatMax: Float64Array;
+  planeNormal: Float64Array;
+  planeOffset: Float64Array;
+  moved: Int32Array;
+  movedCount: number;
+  halfSpaces: Int32Array;
+  halfSpaceCount: number;
+  freeIds: Int32Array;
+  freeCount: number;
+  keys: Float64Array;
+  keysNext: Float64Array;
+  keyCount: number;
+  pairCount: number;
+  addedCount: number;
+  removedCount: number;
+  reportStale: boolean;
+  onInsert(id: number): void;
+  onRemove(id: number): void;
+  grow(): void;
+}
+
+/** The state of `bp` that decides the next updates (views of the live parts, not copies). */
+function broadphaseState(bp: BroadphaseBase): BroadphaseState {
+  const b = bp as unknown as BaseParts;
+  const hw = b.highWater;
+  const n = b.n;
+  return {
+    highWater: hw,
+    liveCount: b.liveCount,
+    flags: b.flags.subarray(0, hw),
+    tightMin: b.tightMin.subarray(0, hw * n),
+    tightMax: b.tightMax.subarray(0, hw * n),
+    fatMin: b.fatMin.subarray(0, hw * n),
+    fatMax: b.fatMax.subarray(0, hw * n),
+    planeNormal: b.planeNormal.subarray(0, hw * n),
+    planeOffset: b.planeOffset.subarray(0, hw),
+    moved: b.moved.subarray(0, b.movedCount),
+    halfSpaces: b.halfSpaces.subarray(0, b.halfSpaceCount),
+    freeIds: b.freeIds.subarray(0, b.freeCount),
+    keys: b.keys.subarray(0, b.keyCount),
+  };
+}
+
+/**
+ * Replaces the whole state of `bp` by `s` (as {@link broadphaseState} gives it; the caller
+ * checked its consistency) and rebuilds the box structure from the fat boxes. Copies.
+ */
+function restoreBroadphaseState(bp: BroadphaseBase, s: BroadphaseState): void {
+  const b = bp as unknown as BaseParts;
+  for (let id = 0; id < b.highWater; id += 1) {
+    if ((b.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) b.onRemove(id);
+  }
+  while (b.capacity < s.highWater) b.grow();
+  b.flags.fill(0);
+  b.flags.set(s.flags);
+  b.tightMin.set(s.tightMin);
+  b.tightMax.set(s.tightMax);
+  b.fatMin.set(s.fatMin);
+  b.fatMax.set(s.fatMax);
+  b.planeNormal.set(s.planeNormal);
+  b.planeOffset.set(s.planeOffset);
+  b.highWater = s.highWater;
+  b.liveCount = s.liveCount;
+  if (b.moved.length < s.moved.length) b.moved = new Int32Array(growLength(b.moved.length, s.moved.length));
+  b.moved.set(s.moved);
+  b.movedCount = s.moved.length;
+  if (b.halfSpaces.length < s.halfSpaces.length)
+    b.halfSpaces = new Int32Array(growLength(b.halfSpaces.length, s.halfSpaces.length));
+  b.halfSpaces.set(s.halfSpaces);
+  b.halfSpaceCount = s.halfSpaces.length;
+  b.freeIds.set(s.freeIds);
+  b.freeCount = s.freeIds.length;
+  if (b.keys.length < s.keys.length) {
+    b.keys = new Float64Array(growLength(b.keys.length, s.keys.length));
+    b.keysNext = new Float64Array(b.keys.length);
+  }
+  b.keys.set(s.keys);
+  b.keyCount = s.keys.length;
+  b.pairCount = 0;
+  b.addedCount = 0;
+  b.removedCount = 0;
+  b.reportStale = true;
+  for (let id = 0; id < s.highWater; id += 1) {
+    if ((b.flags[id]! & (ALIVE | HALFSPACE)) === ALIVE) b.onInsert(id);
+  }
 }

@@ -11,6 +11,7 @@
  * @module
  */
 import type { Body } from '../body.js';
+import { proxyIsAlive, proxyIsHalfSpace } from '../collision/broadphase-queries.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
 import type { WorldBase as World, WorldOptions } from '../world.js';
@@ -21,6 +22,7 @@ import { readContacts, readPendingEnds } from './contacts.js';
 import { readJoint } from './joints.js';
 import { SnapshotReader } from './reader.js';
 import { readShape } from './shapes.js';
+import { worldParts } from './world-parts.js';
 import { PARAM_BOOLEAN, PARAM_NUMBER } from './write-world.js';
 
 /** Reads a world; `create` is `new World(options)` (passed in so this module imports no World value). */
@@ -94,7 +96,7 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
   }
   for (const f of flags) applyBodyFlags(D, f);
 
-  const parts = world.snapshotParts();
+  const parts = worldParts(world);
   r.f64s(bodyCount, parts.reach);
   readBroadphase(r, parts.broadphase);
   const bp = parts.broadphase;
@@ -110,8 +112,10 @@ export function readWorldSnapshot(bytes: Uint8Array, create: (options: WorldOpti
       r.fail(`${body.label}'s part proxies do not match its compound`);
     partIds.push(ids);
     for (const id of ids ?? [body.proxyId]) {
-      if (!bp.isAlive(id) || byProxy[id] !== undefined) r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
-      if (bp.isHalfSpace(id) !== (body.shape.kind === 'halfspace')) r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
+      if (!proxyIsAlive(bp, id) || byProxy[id] !== undefined)
+        r.fail(`${body.label} has the proxy id ${id}, not a live id of its own`);
+      if (proxyIsHalfSpace(bp, id) !== (body.shape.kind === 'halfspace'))
+        r.fail(`${body.label}'s proxy ${id} is of the wrong kind`);
       byProxy[id] = body;
       proxies += 1;
     }

@@ -47,11 +47,12 @@ const TAG_U32 = 6;
 const TAG_U8 = 7;
 
 /**
- * Whether a field is code, not data (functions and the pair collider table), or a compound's
- * `parts` (written as shapes of their own before its fields): taken from the rebuilt shape.
+ * Whether a field is code, not data (functions, the pair collider table and a compound's
+ * `worldOps`), or a compound's `parts` (written as shapes of their own before its fields): taken
+ * from the rebuilt shape.
  */
 function isCode(name: string, value: unknown): boolean {
-  return typeof value === 'function' || name === 'colliders' || name === 'parts';
+  return typeof value === 'function' || name === 'colliders' || name === 'worldOps' || name === 'parts';
 }
 
 function hasOwn(object: object, name: string): boolean {

@@ -9,6 +9,7 @@ import type { WorldBase } from '../world.js';
 import { World } from '../world-nd.js';
 import { readWorldSnapshot } from './read-world.js';
 import { writeWorldSnapshot } from './write-world.js';
+import { worldParts } from './world-parts.js';
 
 /**
  * The whole state a step reads, as bytes: dimension, parameters, gravity, time and step count,
@@ -33,7 +34,7 @@ import { writeWorldSnapshot } from './write-world.js';
  */
 export function snapshotWorld(world: WorldBase): Uint8Array {
   const w = checkWorld('snapshotWorld', world);
-  return writeWorldSnapshot(w, w.snapshotParts());
+  return writeWorldSnapshot(w, worldParts(w));
 }
 
 /**

@@ -118,16 +118,6 @@ const REUSE_RATE = 0.05;
 /** A residual this small (m or rad) is rounding: the position projection stops. */
 const FINE_RESIDUAL = 2.5e-16;
 
-/**
- * Once every angular row is at rounding (`FINE_RESIDUAL`), a linear residual below this fraction
- * of constraintSlop (1e-9 m at the defaults) ends the position projection after a pass: a chord
- * pass or two short of rounding, each a rebuild of the rows, a solve of the tree and a move of
- * every body. Angular rows are still taken to rounding: their error, −2⟨Q⟩_p, is ill-conditioned
- * near a half turn (a 4D pin stopped at 1e-9 passed a 1e-12 angle error on to a w-plane spin that
- * grew to 2e-3 rad/s at the step its rotor's scalar part crossed 0).
- */
-const DONE_FRACTION = 1e-6;
-
 /** Below this residual, a chord step that no longer shrinks it has met rounding: the projection stops. */
 const FLOOR_RESIDUAL = 1e-12;
 
@@ -240,8 +230,6 @@ export class JointSolver {
   /** Per joint: jFirst·65536 + jBlock when the tree was last factored in the projection. */
   private layoutBlock = new Int32Array(16);
   private layoutRows = -1;
-  /** The largest |C − target| of the angular equality rows at the last `rigidResidual`. */
-  private angularResidual = 0;
 
   constructor(D: Dims) {
     const { n, k, r } = D;
@@ -801,7 +789,6 @@ export class JointSolver {
       }
     }
     const tolerance = POSITION_TOLERANCE * this.sc[SC_SLOP];
-    const done = DONE_FRACTION * this.sc[SC_SLOP];
     const most = iterations * POSITION_PASSES_FACTOR;
     // The tree is factored at the first pass and its factorisation reused (a chord Newton step)
     // while the rows keep their layout and each pass shrinks the residual at least REUSE_RATE-fold;
@@ -818,9 +805,8 @@ export class JointSolver {
       // C alone, for a chord step (a pass that factors again rebuilds them in full, below).
       this.buildProjectionRows(factored);
       const residual = this.rigidResidual();
-      // An error at the level of rounding ends the projection at once; after a pass, so does a
-      // linear error below `done` with the angular rows at rounding.
-      if (residual <= FINE_RESIDUAL || (it > 0 && residual <= done && this.angularResidual <= FINE_RESIDUAL)) break;
+      // An error at the level of rounding ends the projection at once.
+      if (residual <= FINE_RESIDUAL) break;
       const canReuse = factored === 1 && this.sameLayout() === 1;
       // A chord step that no longer shrinks the error by REUSE_RATE: at the rounding floor, the
       // projection is done; above it, the tree is factored again.
@@ -903,26 +889,21 @@ export class JointSolver {
 
   /**
    * The largest |C − target| over the equality rows of the rigid joints (rows just built): what
-   * the position projection has left to remove. The largest over the angular rows alone goes to
-   * `angularResidual`.
+   * the position projection has left to remove.
    */
   private rigidResidual(): number {
     const RS = this.RS;
     const rows = this.rows;
     const ok = this.layoutOk === 1;
     let worst = 0;
-    let angular = 0;
-    const kind = this.rowKind;
     for (let j = 0; j < this.count; j += 1) {
       if (this.jSoft[j] !== 0) continue;
       const first = this.jFirst[j];
       for (let q = first; q < first + this.jBlock[j]; q += 1) {
         const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
         if (e > worst) worst = e;
-        if (kind[q] !== KIND_LINEAR && e > angular) angular = e;
       }
     }
-    this.angularResidual = angular;
     return worst;
   }
 

@@ -69,6 +69,7 @@ export class JointTree {
   private nW = new Int32Array(16); // offset of W (s_i × s_parent)
   private nV = new Int32Array(16); // offset in the vectors
   private nPiv = new Int32Array(16); // offset of the pivots (2 s per node)
+  private nSwap = new Int32Array(16); // 1: the node's LU swapped rows or columns (else its solve skips the swaps)
   private fold = new Int32Array(16); // body node: first folded joint, −1
   private foldNext = new Int32Array(16); // per joint: next folded joint of the same body
   private adjHead = new Int32Array(16); // body node: first incident joint node (as an edge id)
@@ -281,6 +282,7 @@ export class JointTree {
     this.nW = growInt32(this.nW, need);
     this.nV = growInt32(this.nV, need);
     this.nPiv = growInt32(this.nPiv, need);
+    this.nSwap = growInt32(this.nSwap, need);
     this.fold = growInt32(this.fold, need);
     this.adjHead = growInt32(this.adjHead, need);
   }
@@ -330,12 +332,15 @@ export class JointTree {
     const u = jointIsChild === 1 ? sp : s;
     const stepRow = jointIsChild === 1 ? sp : 1;
     const stepCol = jointIsChild === 1 ? 1 : sp;
+    // The columns in three runs (direction, Jacobian, folded zeros): no branch per entry.
+    const uj = u < bs ? u : bs;
+    const ud = u < n ? u : n;
     for (let r = 0; r < m; r += 1) {
       const base = (first + r) * RS;
       const at = r * stepRow;
-      for (let c = 0; c < u; c += 1) {
-        H[at + c * stepCol] = c >= bs ? 0 : c < n ? sg * rows[base + c] : sg * rows[base + offJ + c];
-      }
+      for (let c = 0; c < ud; c += 1) H[at + c * stepCol] = sg * rows[base + c];
+      for (let c = ud; c < uj; c += 1) H[at + c * stepCol] = sg * rows[base + offJ + c];
+      for (let c = uj; c < u; c += 1) H[at + c * stepCol] = 0;
     }
   }
 
@@ -524,11 +529,10 @@ export class JointTree {
     let maxSize = 0;
     for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];
     this.col = growFloat64(this.col, maxSize, 0);
-    const col = this.col;
     for (let o = 0; o < this.nodeCount; o += 1) {
       const i = this.nOrder[o];
       const s = this.nSize[i];
-      this.luFactor(this.nD[i], s, this.nPiv[i]);
+      this.nSwap[i] = this.luFactor(this.nD[i], s, this.nPiv[i]);
       const p = this.nParent[i];
       if (p < 0) continue;
       const sp = this.nSize[p];
@@ -541,11 +545,8 @@ export class JointTree {
       if (this.hblk.length < s * sp) this.hblk = growFloat64(this.hblk, s * sp, 0);
       const H = this.hblk;
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
-      for (let c = 0; c < sp; c += 1) {
-        for (let r = 0; r < s; r += 1) col[r] = H[r * sp + c];
-        this.luSolve(this.nD[i], s, this.nPiv[i], col, 0);
-        for (let r = 0; r < s; r += 1) mat[w0 + r * sp + c] = col[r];
-      }
+      for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
+      this.luSolveColumns(this.nD[i], s, this.nPiv[i], w0, sp);
       const dp = this.nD[p];
       for (let q = 0; q < s; q += 1) {
         for (let r = 0; r < sp; r += 1) {
@@ -583,7 +584,7 @@ export class JointTree {
           vec[vp + c] -= sum;
         }
       }
-      this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0);
+      this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0, this.nSwap[i]);
     }
     for (let o = N - 1; o >= 0; o -= 1) {
       const i = this.nOrder[o];
@@ -738,15 +739,14 @@ export class JointTree {
 
   // ---- dense LU with complete pivoting, in place at mat[d0], s×s; pivots at piv[p0] (rows, cols) ----
 
-  private luFactor(d0: number, s: number, p0: number): void {
+  /** Returns 1 if a row or a column was swapped, else 0 (then the pivots are the identity). */
+  private luFactor(d0: number, s: number, p0: number): number {
     const A = this.mat;
     const piv = this.piv;
-    let maxAbs = 0;
-    for (let q = 0; q < s * s; q += 1) {
-      const v = Math.abs(A[d0 + q]);
-      if (v > maxAbs) maxAbs = v;
-    }
-    const tol = maxAbs * PIVOT_TOLERANCE;
+    let swapped = 0;
+    // The tolerance is relative to the largest entry, which the first column's search finds (it
+    // scans the whole block): set there, not by a scan of its own.
+    let tol = 0;
     for (let c = 0; c < s; c += 1) {
       // Complete pivoting.
       let br = c;
@@ -762,8 +762,10 @@ export class JointTree {
           }
         }
       }
+      if (c === 0) tol = (best > 0 ? best : 0) * PIVOT_TOLERANCE;
       piv[p0 + c] = br;
       piv[p0 + s + c] = bc;
+      if (br !== c || bc !== c) swapped = 1;
       if (br !== c) {
         for (let q = 0; q < s; q += 1) {
           const t = A[d0 + c * s + q];
@@ -786,7 +788,7 @@ export class JointTree {
           piv[p0 + r] = r;
           piv[p0 + s + r] = r;
         }
-        return;
+        return swapped;
       }
       for (let r = c + 1; r < s; r += 1) {
         const f = A[d0 + r * s + c] / pv;
@@ -795,14 +797,77 @@ export class JointTree {
         for (let q = c + 1; q < s; q += 1) A[d0 + r * s + q] -= f * A[d0 + c * s + q];
       }
     }
+    return swapped;
   }
 
-  /** x ← D⁻¹ x for the LU at d0 (x at v[v0 .. v0 + s)); dropped unknowns get 0. */
-  private luSolve(d0: number, s: number, p0: number, v: Float64Array, v0: number): void {
+  /**
+   * X ← D⁻¹ X for the LU at d0, X the s × m block at mat[x0] (row-major): `luSolve` on each column
+   * at once, each column through the same operations in the same order (so the same numbers), with
+   * the row swaps, the loops and the pivots read once for all the columns.
+   */
+  private luSolveColumns(d0: number, s: number, p0: number, x0: number, m: number): void {
+    const A = this.mat;
+    const piv = this.piv;
+    for (let c = 0; c < s; c += 1) {
+      const r = piv[p0 + c];
+      if (r !== c) {
+        const xc = x0 + c * m;
+        const xr = x0 + r * m;
+        for (let q = 0; q < m; q += 1) {
+          const t = A[xc + q];
+          A[xc + q] = A[xr + q];
+          A[xr + q] = t;
+        }
+      }
+    }
+    // L y = b (unit lower).
+    for (let r = 1; r < s; r += 1) {
+      const xr = x0 + r * m;
+      for (let q = 0; q < r; q += 1) {
+        const f = A[d0 + r * s + q];
+        const xq = x0 + q * m;
+        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+      }
+    }
+    // U x = y.
+    for (let r = s - 1; r >= 0; r -= 1) {
+      const d = A[d0 + r * s + r];
+      const xr = x0 + r * m;
+      if (d === 0) {
+        for (let c = 0; c < m; c += 1) A[xr + c] = 0;
+        continue;
+      }
+      for (let q = r + 1; q < s; q += 1) {
+        const f = A[d0 + r * s + q];
+        const xq = x0 + q * m;
+        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+      }
+      for (let c = 0; c < m; c += 1) A[xr + c] = A[xr + c] / d;
+    }
+    // Column swaps, undone in reverse.
+    for (let c = s - 1; c >= 0; c -= 1) {
+      const q = piv[p0 + s + c];
+      if (q !== c) {
+        const xc = x0 + c * m;
+        const xq = x0 + q * m;
+        for (let k = 0; k < m; k += 1) {
+          const t = A[xc + k];
+          A[xc + k] = A[xq + k];
+          A[xq + k] = t;
+        }
+      }
+    }
+  }
+
+  /**
+   * x ← D⁻¹ x for the LU at d0 (x at v[v0 .. v0 + s)); dropped unknowns get 0. `swapped` 0 (from
+   * `luFactor`): the pivots are the identity, and the swap loops are skipped.
+   */
+  private luSolve(d0: number, s: number, p0: number, v: Float64Array, v0: number, swapped: number): void {
     const A = this.mat;
     const piv = this.piv;
     // Row swaps.
-    for (let c = 0; c < s; c += 1) {
+    for (let c = 0; c < s && swapped === 1; c += 1) {
       const r = piv[p0 + c];
       if (r !== c) {
         const t = v[v0 + c];
@@ -828,7 +893,7 @@ export class JointTree {
       v[v0 + r] = sum / d;
     }
     // Column swaps, undone in reverse.
-    for (let c = s - 1; c >= 0; c -= 1) {
+    for (let c = s - 1; c >= 0 && swapped === 1; c -= 1) {
       const q = piv[p0 + s + c];
       if (q !== c) {
         const t = v[v0 + c];

@@ -6,6 +6,7 @@
  *
  * @module
  */
+import type { ContactSet } from '../contacts/contact-set.js';
 import { SOLVE_CHANGE } from './contact-solver.js';
 import { ContactSolver3 } from './contact-solver-3d.js';
 import type { SolverBodies } from './solver-bodies.js';
@@ -42,6 +43,43 @@ export class ContactSolverND extends ContactSolver3 {
     const d1 = rows[base + 1];
     const d2 = rows[base + 2];
     const d3 = rows[base + 3];
+    if (isoA >= 0 && isoB >= 0) {
+      // Two isotropic bodies (boxes, balls): the arms in locals and no per-entry test.
+      const ra0 = rA[0],
+        ra1 = rA[1],
+        ra2 = rA[2],
+        ra3 = rA[3];
+      const rb0 = rB[0],
+        rb1 = rB[1],
+        rb2 = rB[2],
+        rb3 = rB[3];
+      const ia0 = ra0 * d1 - ra1 * d0;
+      const ia1 = ra0 * d2 - ra2 * d0;
+      const ia2 = ra0 * d3 - ra3 * d0;
+      const ia3 = ra1 * d2 - ra2 * d1;
+      const ia4 = ra1 * d3 - ra3 * d1;
+      const ia5 = ra2 * d3 - ra3 * d2;
+      const ib0 = rb0 * d1 - rb1 * d0;
+      const ib1 = rb0 * d2 - rb2 * d0;
+      const ib2 = rb0 * d3 - rb3 * d0;
+      const ib3 = rb1 * d2 - rb2 * d1;
+      const ib4 = rb1 * d3 - rb3 * d1;
+      const ib5 = rb2 * d3 - rb3 * d2;
+      rows[base + 4] = ia0;
+      rows[base + 5] = ia1;
+      rows[base + 6] = ia2;
+      rows[base + 7] = ia3;
+      rows[base + 8] = ia4;
+      rows[base + 9] = ia5;
+      rows[base + 10] = ib0;
+      rows[base + 11] = ib1;
+      rows[base + 12] = ib2;
+      rows[base + 13] = ib3;
+      rows[base + 14] = ib4;
+      rows[base + 15] = ib5;
+      this.isoRest4(rows, base, isoA, isoB, imA, imB, ia0, ia1, ia2, ia3, ia4, ia5, ib0, ib1, ib2, ib3, ib4, ib5);
+      return;
+    }
     const ja0 = rA[0] * d1 - rA[1] * d0;
     const jb0 = rB[0] * d1 - rB[1] * d0;
     rows[base + 4] = ja0;
@@ -192,6 +230,293 @@ export class ContactSolverND extends ContactSolver3 {
     rows[base + 28] = K > 0 ? 1 / K : 0;
     rows[base + 29] = KA;
     rows[base + 30] = KB;
+  }
+
+  /**
+   * The rest of an n = 4 row of two isotropic bodies from its bivectors J_A, J_B: I⁻¹J = s·J at
+   * 16 and 22, then the effective mass and K_A, K_B at 28..30 (K_X = 1/m_X + Σ (s J)·J, summed in
+   * the general loop's order; imA = imB = 0 for a twist row, where the loop starts at 0).
+   */
+  private isoRest4(
+    rows: Float64Array,
+    base: number,
+    isoA: number,
+    isoB: number,
+    imA: number,
+    imB: number,
+    ja0: number,
+    ja1: number,
+    ja2: number,
+    ja3: number,
+    ja4: number,
+    ja5: number,
+    jb0: number,
+    jb1: number,
+    jb2: number,
+    jb3: number,
+    jb4: number,
+    jb5: number,
+  ): void {
+    const sa0 = isoA * ja0,
+      sa1 = isoA * ja1,
+      sa2 = isoA * ja2,
+      sa3 = isoA * ja3,
+      sa4 = isoA * ja4,
+      sa5 = isoA * ja5;
+    const sb0 = isoB * jb0,
+      sb1 = isoB * jb1,
+      sb2 = isoB * jb2,
+      sb3 = isoB * jb3,
+      sb4 = isoB * jb4,
+      sb5 = isoB * jb5;
+    rows[base + 16] = sa0;
+    rows[base + 17] = sa1;
+    rows[base + 18] = sa2;
+    rows[base + 19] = sa3;
+    rows[base + 20] = sa4;
+    rows[base + 21] = sa5;
+    rows[base + 22] = sb0;
+    rows[base + 23] = sb1;
+    rows[base + 24] = sb2;
+    rows[base + 25] = sb3;
+    rows[base + 26] = sb4;
+    rows[base + 27] = sb5;
+    const KA = imA + sa0 * ja0 + sa1 * ja1 + sa2 * ja2 + sa3 * ja3 + sa4 * ja4 + sa5 * ja5;
+    const KB = imB + sb0 * jb0 + sb1 * jb1 + sb2 * jb2 + sb3 * jb3 + sb4 * jb4 + sb5 * jb5;
+    const K = KA + KB;
+    rows[base + 28] = K > 0 ? 1 / K : 0;
+    rows[base + 29] = KA;
+    rows[base + 30] = KB;
+  }
+
+  /**
+   * {@link ContactSolver.buildTwistRow} for n = 4 and two isotropic bodies, written out (the same
+   * sums in the same order as the general loop: K_A = 0 + Σ (s_A e)·e).
+   */
+  protected override buildTwistRow(
+    rows: Float64Array,
+    base: number,
+    t1: number,
+    t2: number,
+    a: number,
+    b: number,
+    sb: SolverBodies,
+  ): void {
+    const isoA = sb.isoInvInertia[a];
+    const isoB = sb.isoInvInertia[b];
+    if (!this.writtenOut || this.n !== 4 || isoA < 0 || isoB < 0) {
+      super.buildTwistRow(rows, base, t1, t2, a, b, sb);
+      return;
+    }
+    const T = this.tangents;
+    const u = t1 * 4;
+    const v = t2 * 4;
+    const u0 = T[u],
+      u1 = T[u + 1],
+      u2 = T[u + 2],
+      u3 = T[u + 3];
+    const v0 = T[v],
+      v1 = T[v + 1],
+      v2 = T[v + 2],
+      v3 = T[v + 3];
+    const e0 = u0 * v1 - u1 * v0;
+    const e1 = u0 * v2 - u2 * v0;
+    const e2 = u0 * v3 - u3 * v0;
+    const e3 = u1 * v2 - u2 * v1;
+    const e4 = u1 * v3 - u3 * v1;
+    const e5 = u2 * v3 - u3 * v2;
+    rows[base] = 0;
+    rows[base + 1] = 0;
+    rows[base + 2] = 0;
+    rows[base + 3] = 0;
+    rows[base + 4] = e0;
+    rows[base + 5] = e1;
+    rows[base + 6] = e2;
+    rows[base + 7] = e3;
+    rows[base + 8] = e4;
+    rows[base + 9] = e5;
+    rows[base + 10] = e0;
+    rows[base + 11] = e1;
+    rows[base + 12] = e2;
+    rows[base + 13] = e3;
+    rows[base + 14] = e4;
+    rows[base + 15] = e5;
+    this.isoRest4(rows, base, isoA, isoB, 0, 0, e0, e1, e2, e3, e4, e5, e0, e1, e2, e3, e4, e5);
+  }
+
+  /**
+   * {@link ContactSolver.warmStart}; for n = 4 written out (row stride 31: dir at 0, I⁻¹J_A at 16,
+   * I⁻¹J_B at 22): the same arithmetic in the same order, so bit-identical to the general loop;
+   * the velocities of the two bodies stay in locals for the whole manifold instead of being read
+   * and written back in memory by every point (8 of them on a resting face).
+   */
+  override warmStart(sb: SolverBodies): void {
+    if (!this.writtenOut || this.n !== 4) {
+      super.warmStart(sb);
+      return;
+    }
+    const V = sb.v;
+    const W = sb.w;
+    const rows = this.rows;
+    const patch = this.patchRows;
+    const lambdaN = this.lambdaN;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const a = this.mfA[mf];
+      const b = this.mfB[mf];
+      const ima = sb.invMass[a];
+      const imb = sb.invMass[b];
+      const va = a * 4;
+      const vb = b * 4;
+      const wa = a * 6;
+      const wb = b * 6;
+      let vax = V[va],
+        vay = V[va + 1],
+        vaz = V[va + 2],
+        vaw = V[va + 3];
+      let vbx = V[vb],
+        vby = V[vb + 1],
+        vbz = V[vb + 2],
+        vbw = V[vb + 3];
+      let wa0 = W[wa],
+        wa1 = W[wa + 1],
+        wa2 = W[wa + 2],
+        wa3 = W[wa + 3],
+        wa4 = W[wa + 4],
+        wa5 = W[wa + 5];
+      let wb0 = W[wb],
+        wb1 = W[wb + 1],
+        wb2 = W[wb + 2],
+        wb3 = W[wb + 3],
+        wb4 = W[wb + 4],
+        wb5 = W[wb + 5];
+      const first = this.mfFirst[mf];
+      const last = first + this.mfPoints[mf];
+      for (let cp = first; cp < last; cp += 1) {
+        const lambda = lambdaN[cp];
+        if (lambda === 0) continue;
+        const base = cp * 31;
+        const la = lambda * ima;
+        const lb = lambda * imb;
+        vax -= la * rows[base];
+        vbx += lb * rows[base];
+        vay -= la * rows[base + 1];
+        vby += lb * rows[base + 1];
+        vaz -= la * rows[base + 2];
+        vbz += lb * rows[base + 2];
+        vaw -= la * rows[base + 3];
+        vbw += lb * rows[base + 3];
+        wa0 -= lambda * rows[base + 16];
+        wb0 += lambda * rows[base + 22];
+        wa1 -= lambda * rows[base + 17];
+        wb1 += lambda * rows[base + 23];
+        wa2 -= lambda * rows[base + 18];
+        wb2 += lambda * rows[base + 24];
+        wa3 -= lambda * rows[base + 19];
+        wb3 += lambda * rows[base + 25];
+        wa4 -= lambda * rows[base + 20];
+        wb4 += lambda * rows[base + 26];
+        wa5 -= lambda * rows[base + 21];
+        wb5 += lambda * rows[base + 27];
+      }
+      // the patch: tangent rows (linear and angular), then twist rows (angular only)
+      for (let r = 0; r < 6; r += 1) {
+        const lambda = r < 3 ? lambdaP[mf * 3 + r] : lambdaW[mf * 3 + r - 3];
+        if (lambda === 0) continue;
+        const base = (mf * 6 + r) * 31;
+        if (r < 3) {
+          const la = lambda * ima;
+          const lb = lambda * imb;
+          vax -= la * patch[base];
+          vbx += lb * patch[base];
+          vay -= la * patch[base + 1];
+          vby += lb * patch[base + 1];
+          vaz -= la * patch[base + 2];
+          vbz += lb * patch[base + 2];
+          vaw -= la * patch[base + 3];
+          vbw += lb * patch[base + 3];
+        }
+        wa0 -= lambda * patch[base + 16];
+        wb0 += lambda * patch[base + 22];
+        wa1 -= lambda * patch[base + 17];
+        wb1 += lambda * patch[base + 23];
+        wa2 -= lambda * patch[base + 18];
+        wb2 += lambda * patch[base + 24];
+        wa3 -= lambda * patch[base + 19];
+        wb3 += lambda * patch[base + 25];
+        wa4 -= lambda * patch[base + 20];
+        wb4 += lambda * patch[base + 26];
+        wa5 -= lambda * patch[base + 21];
+        wb5 += lambda * patch[base + 27];
+      }
+      // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
+      V[va] = vax;
+      V[va + 1] = vay;
+      V[va + 2] = vaz;
+      V[va + 3] = vaw;
+      W[wa] = wa0;
+      W[wa + 1] = wa1;
+      W[wa + 2] = wa2;
+      W[wa + 3] = wa3;
+      W[wa + 4] = wa4;
+      W[wa + 5] = wa5;
+      V[vb] = vbx;
+      V[vb + 1] = vby;
+      V[vb + 2] = vbz;
+      V[vb + 3] = vbw;
+      W[wb] = wb0;
+      W[wb + 1] = wb1;
+      W[wb + 2] = wb2;
+      W[wb + 3] = wb3;
+      W[wb + 4] = wb4;
+      W[wb + 5] = wb5;
+    }
+  }
+
+  /**
+   * {@link ContactSolver.store}; for n = 4 with the patch projection written out (the same sums
+   * in the same order as the general loops).
+   */
+  override store(contacts: ContactSet): void {
+    if (!this.writtenOut || this.n !== 4) {
+      super.store(contacts);
+      return;
+    }
+    const P = contacts.pointCapacity;
+    const patch = this.patchRows;
+    const shocked = this.shocked;
+    this.shocked = false;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    const PT = contacts.patchTangent;
+    const PW = contacts.patchTwist;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const slot = this.mfContact[mf];
+      const first = this.mfFirst[mf];
+      const count = this.mfPoints[mf];
+      for (let pq = 0; pq < count; pq += 1) {
+        const cp = first + pq;
+        const ni = slot * P + pq;
+        contacts.normalImpulse[ni] = shocked ? Math.max(0, this.lambdaN[cp] - this.keptN[cp]) : this.lambdaN[cp];
+        contacts.approachSpeed[ni] = this.sep[cp] > this.bounceGap[cp] && this.maxLambda[cp] > 0 ? this.vnStop[cp] : 0;
+      }
+      // The patch as a world vector and a world bivector: they survive a change of tangent basis.
+      const pb = mf * 186;
+      const m3 = mf * 3;
+      const l1 = lambdaP[m3] - (shocked ? this.keptP[m3] : 0);
+      const l2 = lambdaP[m3 + 1] - (shocked ? this.keptP[m3 + 1] : 0);
+      const l3 = lambdaP[m3 + 2] - (shocked ? this.keptP[m3 + 2] : 0);
+      const ti = slot * 4;
+      for (let d = 0; d < 4; d += 1) PT[ti + d] = 0 + l1 * patch[pb + d] + l2 * patch[pb + 31 + d] + l3 * patch[pb + 62 + d];
+      const w1 = lambdaW[m3] - (shocked ? this.keptW[m3] : 0);
+      const w2 = lambdaW[m3 + 1] - (shocked ? this.keptW[m3 + 1] : 0);
+      const w3 = lambdaW[m3 + 2] - (shocked ? this.keptW[m3 + 2] : 0);
+      const wi = slot * 6;
+      for (let pl = 0; pl < 6; pl += 1) {
+        PW[wi + pl] = 0 + w1 * patch[pb + 97 + pl] + w2 * patch[pb + 128 + pl] + w3 * patch[pb + 159 + pl];
+      }
+    }
   }
 
   /** {@link ContactSolver.buildRow} for any n: the general loop. */

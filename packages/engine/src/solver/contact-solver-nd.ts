@@ -6,8 +6,13 @@
  *
  * @module
  */
+import type { Body } from '../body.js';
+import { MOTION_DYNAMIC } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
-import { SOLVE_CHANGE } from './contact-solver.js';
+import { CONTACT_ACTIVE } from '../contacts/contact-set.js';
+import { STEP_H } from '../integrator/step-constants.js';
+import type { Params } from '../params.js';
+import { SOLVE_BIAS, SOLVE_CHANGE, SOLVE_H, SOLVE_SLOP, SOLVE_THRESHOLD, SOLVE_TOLERANCE } from './contact-solver.js';
 import { ContactSolver3 } from './contact-solver-3d.js';
 import type { SolverBodies } from './solver-bodies.js';
 
@@ -230,6 +235,273 @@ export class ContactSolverND extends ContactSolver3 {
     rows[base + 28] = K > 0 ? 1 / K : 0;
     rows[base + 29] = KA;
     rows[base + 30] = KB;
+  }
+
+  /**
+   * {@link ContactSolver.prepare}; for n = 4 a copy written out (the tangent basis, the normal rows
+   * of two isotropic bodies built inline from the point, the patch radius and the warm-start
+   * projections of the patch): the same operations in the same order as the shared prepare and
+   * its general loops, so bit-identical (keep the two in step).
+   */
+  override prepare(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
+    if (!this.writtenOut || this.n !== 4) return super.prepare(contacts, sb, stepConstants, p);
+    this.shocked = false;
+    const c = this.constants;
+    const h = stepConstants[STEP_H];
+    c[SOLVE_H] = h;
+    c[SOLVE_BIAS] = p.biasFactor / h;
+    c[SOLVE_SLOP] = p.penetrationSlop;
+    c[SOLVE_THRESHOLD] = p.restitutionThreshold;
+    c[SOLVE_TOLERANCE] = p.solverTolerance;
+    const warm = p.useWarmStart;
+    const maxPoints = p.maxContacts;
+    const P = contacts.pointCapacity;
+    const tangents = this.tangents;
+    const rA = this.rA;
+    const rB = this.rB;
+    const PT = contacts.patchTangent;
+    const PW = contacts.patchTwist;
+    this.mfCount = 0;
+    this.cpCount = 0;
+    for (let i = 0; i < contacts.count; i += 1) {
+      const slot = contacts.order[i];
+      if (!(contacts.flags[slot] & CONTACT_ACTIVE)) continue;
+      const man = contacts.manifolds[slot];
+      const count = man.count;
+      if (count === 0) continue;
+      if (maxPoints > 0 && this.cpCount + count > maxPoints) break;
+      const A = contacts.bodyA[slot] as Body;
+      const B = contacts.bodyB[slot] as Body;
+      if (A.sleeping) A.wake();
+      if (B.sleeping) B.wake();
+      const a = sb.slotOf(A);
+      const b = sb.slotOf(B);
+      this.ensureManifolds(this.mfCount + 1);
+      this.ensurePoints(this.cpCount + count);
+      const rows = this.rows;
+      const mf = this.mfCount++;
+      this.mfContact[mf] = slot;
+      this.mfA[mf] = a;
+      this.mfB[mf] = b;
+      this.mfFirst[mf] = this.cpCount;
+      this.mfPoints[mf] = count;
+      this.mfFriction[mf] = contacts.friction[slot];
+      this.mfRestitution[mf] = contacts.restitution[slot];
+      const N = man.normal;
+      const d0 = N[0],
+        d1 = N[1],
+        d2 = N[2],
+        d3 = N[3];
+      // The tangent basis of the shared prepare (a Householder reflection), written out.
+      let big = 0;
+      if (Math.abs(d1) > Math.abs(N[big])) big = 1;
+      if (Math.abs(d2) > Math.abs(N[big])) big = 2;
+      if (Math.abs(d3) > Math.abs(N[big])) big = 3;
+      const sgn = N[big] >= 0 ? 1 : -1;
+      const twoOverUU = 2 / (2 + 2 * Math.abs(N[big]));
+      {
+        const u0 = big === 0 ? d0 + sgn : d0;
+        const u1 = big === 1 ? d1 + sgn : d1;
+        const u2 = big === 2 ? d2 + sgn : d2;
+        const u3 = big === 3 ? d3 + sgn : d3;
+        for (let t = 0, col = 0; col < 4; col += 1) {
+          if (col === big) continue;
+          const uc = N[col] * twoOverUU;
+          const o = t * 4;
+          tangents[o] = (col === 0 ? 1 : 0) - u0 * uc;
+          tangents[o + 1] = (col === 1 ? 1 : 0) - u1 * uc;
+          tangents[o + 2] = (col === 2 ? 1 : 0) - u2 * uc;
+          tangents[o + 3] = (col === 3 ? 1 : 0) - u3 * uc;
+          t += 1;
+        }
+      }
+      const xA = A.x;
+      const xB = B.x;
+      const V = sb.v;
+      const W = sb.w;
+      const e = this.mfRestitution[mf];
+      const bouncy = e !== 0;
+      let accel = 0;
+      if (bouncy) {
+        const g = this.gravity;
+        const fA = A.motion === MOTION_DYNAMIC ? A.force : null;
+        const fB = B.motion === MOTION_DYNAMIC ? B.force : null;
+        const imA = A.invMass;
+        const imB = B.invMass;
+        for (let d = 0; d < 4; d += 1) {
+          const aA = fA !== null ? g[d] + fA[d] * imA : 0;
+          const aB = fB !== null ? g[d] + fB[d] * imB : 0;
+          accel += N[d] * (aB - aA);
+        }
+      }
+      const isoA = sb.isoInvInertia[a];
+      const isoB = sb.isoInvInertia[b];
+      const iso = isoA >= 0 && isoB >= 0;
+      const imA = sb.invMass[a];
+      const imB = sb.invMass[b];
+      const xa0 = xA[0],
+        xa1 = xA[1],
+        xa2 = xA[2],
+        xa3 = xA[3];
+      const xb0 = xB[0],
+        xb1 = xB[1],
+        xb2 = xB[2],
+        xb3 = xB[3];
+      const pts = man.points;
+      let c0 = 0,
+        c1 = 0,
+        c2 = 0,
+        c3 = 0;
+      for (let pq = 0; pq < count; pq += 1) {
+        const cp = this.cpCount++;
+        const o = pq * 4;
+        const p0 = pts[o],
+          p1 = pts[o + 1],
+          p2 = pts[o + 2],
+          p3 = pts[o + 3];
+        c0 += p0;
+        c1 += p1;
+        c2 += p2;
+        c3 += p3;
+        const base = cp * 31;
+        rows[base] = d0;
+        rows[base + 1] = d1;
+        rows[base + 2] = d2;
+        rows[base + 3] = d3;
+        const ra0 = p0 - xa0,
+          ra1 = p1 - xa1,
+          ra2 = p2 - xa2,
+          ra3 = p3 - xa3;
+        const rb0 = p0 - xb0,
+          rb1 = p1 - xb1,
+          rb2 = p2 - xb2,
+          rb3 = p3 - xb3;
+        if (iso) {
+          const ja0 = ra0 * d1 - ra1 * d0;
+          const ja1 = ra0 * d2 - ra2 * d0;
+          const ja2 = ra0 * d3 - ra3 * d0;
+          const ja3 = ra1 * d2 - ra2 * d1;
+          const ja4 = ra1 * d3 - ra3 * d1;
+          const ja5 = ra2 * d3 - ra3 * d2;
+          const jb0 = rb0 * d1 - rb1 * d0;
+          const jb1 = rb0 * d2 - rb2 * d0;
+          const jb2 = rb0 * d3 - rb3 * d0;
+          const jb3 = rb1 * d2 - rb2 * d1;
+          const jb4 = rb1 * d3 - rb3 * d1;
+          const jb5 = rb2 * d3 - rb3 * d2;
+          rows[base + 4] = ja0;
+          rows[base + 5] = ja1;
+          rows[base + 6] = ja2;
+          rows[base + 7] = ja3;
+          rows[base + 8] = ja4;
+          rows[base + 9] = ja5;
+          rows[base + 10] = jb0;
+          rows[base + 11] = jb1;
+          rows[base + 12] = jb2;
+          rows[base + 13] = jb3;
+          rows[base + 14] = jb4;
+          rows[base + 15] = jb5;
+          this.isoRest4(rows, base, isoA, isoB, imA, imB, ja0, ja1, ja2, ja3, ja4, ja5, jb0, jb1, jb2, jb3, jb4, jb5);
+        } else {
+          rA[0] = ra0;
+          rA[1] = ra1;
+          rA[2] = ra2;
+          rA[3] = ra3;
+          rB[0] = rb0;
+          rB[1] = rb1;
+          rB[2] = rb2;
+          rB[3] = rb3;
+          this.buildRow4(rows, base, a, b, sb);
+        }
+        if (bouncy) {
+          // The shared prepare's restitution set-up (see there), for n = 4.
+          let vn = 0;
+          for (let d = 0; d < 4; d += 1) vn += rows[base + d] * (V[b * 4 + d] - V[a * 4 + d]);
+          for (let pl = 0; pl < 6; pl += 1) vn += rows[base + 10 + pl] * W[b * 6 + pl] - rows[base + 4 + pl] * W[a * 6 + pl];
+          const s = man.separations[pq];
+          const w0 = vn - 0.5 * accel * h;
+          const shift = (0.5 * accel * h) / e;
+          const wNow = -Math.abs(w0);
+          const wStop = -Math.sqrt(Math.max(0, w0 * w0 - 2 * accel * Math.max(0, s)));
+          this.vnStop[cp] = vn < 0 ? wStop - shift : 0;
+          const recorded = contacts.approachSpeed[slot * P + pq];
+          this.vn0[cp] = Math.min(vn < 0 ? wNow - shift : vn, recorded);
+          this.bounceGap[cp] = recorded < 0 ? c[SOLVE_SLOP] : 0;
+        } else {
+          this.bounceGap[cp] = 0;
+          this.vn0[cp] = 0;
+          this.vnStop[cp] = 0;
+        }
+        const s = man.separations[pq];
+        this.sep[cp] = s;
+        this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
+        this.maxLambda[cp] = 0;
+        this.lambdaN[cp] = warm ? contacts.normalImpulse[slot * P + pq] : 0;
+      }
+      // The friction patch at the centroid of the points.
+      c0 /= count;
+      c1 /= count;
+      c2 /= count;
+      c3 /= count;
+      let radius = 0;
+      for (let pq = 0; pq < count; pq += 1) {
+        const o = pq * 4;
+        const e0 = pts[o] - c0;
+        const e1 = pts[o + 1] - c1;
+        const e2 = pts[o + 2] - c2;
+        const e3 = pts[o + 3] - c3;
+        radius += Math.sqrt(0 + e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3);
+      }
+      this.mfRadius[mf] = radius / count;
+      rA[0] = c0 - xa0;
+      rA[1] = c1 - xa1;
+      rA[2] = c2 - xa2;
+      rA[3] = c3 - xa3;
+      rB[0] = c0 - xb0;
+      rB[1] = c1 - xb1;
+      rB[2] = c2 - xb2;
+      rB[3] = c3 - xb3;
+      const patch = this.patchRows;
+      const pb = mf * 186;
+      const ti = slot * 4;
+      const g0 = PT[ti],
+        g1 = PT[ti + 1],
+        g2 = PT[ti + 2],
+        g3 = PT[ti + 3];
+      for (let t = 0; t < 3; t += 1) {
+        const base = pb + t * 31;
+        const o = t * 4;
+        const t0 = tangents[o],
+          t1 = tangents[o + 1],
+          t2 = tangents[o + 2],
+          t3 = tangents[o + 3];
+        patch[base] = t0;
+        patch[base + 1] = t1;
+        patch[base + 2] = t2;
+        patch[base + 3] = t3;
+        this.buildRow4(patch, base, a, b, sb);
+        this.lambdaP[mf * 3 + t] = warm ? 0 + g0 * t0 + g1 * t1 + g2 * t2 + g3 * t3 : 0;
+      }
+      const wi = slot * 6;
+      // A patch of one point (R = 0) has no twist friction (see the shared prepare).
+      const twistWarm = warm && radius > 0;
+      for (let t1 = 0, w = 0; t1 < 3; t1 += 1) {
+        for (let t2 = t1 + 1; t2 < 3; t2 += 1, w += 1) {
+          const base = pb + (3 + w) * 31;
+          this.buildTwistRow(patch, base, t1, t2, a, b, sb);
+          this.lambdaW[mf * 3 + w] = twistWarm
+            ? 0 +
+              PW[wi] * patch[base + 4] +
+              PW[wi + 1] * patch[base + 5] +
+              PW[wi + 2] * patch[base + 6] +
+              PW[wi + 3] * patch[base + 7] +
+              PW[wi + 4] * patch[base + 8] +
+              PW[wi + 5] * patch[base + 9]
+            : 0;
+        }
+      }
+    }
+    return this.cpCount;
   }
 
   /**

@@ -37,14 +37,14 @@ import type { Params } from '../params.js';
 import type { SolverBodies } from './solver-bodies.js';
 
 /** The numbers of one sub-step the solver reads (kept in an array: no boxed doubles). */
-const SOLVE_H = 0;
-const SOLVE_BIAS = 1;
-const SOLVE_SLOP = 2;
-const SOLVE_THRESHOLD = 3;
+export const SOLVE_H = 0;
+export const SOLVE_BIAS = 1;
+export const SOLVE_SLOP = 2;
+export const SOLVE_THRESHOLD = 3;
 /** The impulse handed to `apply` (through the array: a double argument would be boxed). */
 const SOLVE_LAMBDA = 4;
 /** `solverTolerance` (m/s): a pass or inner sweep that changes no row's velocity more ends early. */
-const SOLVE_TOLERANCE = 5;
+export const SOLVE_TOLERANCE = 5;
 /** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
 export const SOLVE_CHANGE = 6;
 /** Inner sweeps over one manifold in a shock pass (at most: see SOLVE_TOLERANCE). */
@@ -92,7 +92,7 @@ export abstract class ContactSolver {
   protected mfFirst = new Int32Array(16);
   protected mfPoints = new Int32Array(16);
   protected mfFriction = new Float64Array(16);
-  private mfRestitution = new Float64Array(16);
+  protected mfRestitution = new Float64Array(16);
   /** Twist radius R of each patch: the mean distance of its points from their centroid. */
   protected mfRadius = new Float64Array(16);
   /** Manifold order of the shock passes (lowest layer first). */
@@ -114,11 +114,11 @@ export abstract class ContactSolver {
   protected shocked = false;
 
   /** Points of this sub-step. */
-  private cpCount = 0;
+  protected cpCount = 0;
   /** The normal rows, one per point. */
   protected rows: Float64Array;
   protected target = new Float64Array(16);
-  private vn0 = new Float64Array(16);
+  protected vn0 = new Float64Array(16);
   /**
    * Per point: the approach a speculative stop records for the next sub-step's bounce (see
    * `restitution`), in the units of vn0 (the bounce sets the normal velocity to −e times it).
@@ -176,7 +176,7 @@ export abstract class ContactSolver {
     return this.cpCount;
   }
 
-  private ensureManifolds(need: number): void {
+  protected ensureManifolds(need: number): void {
     if (need <= this.mfContact.length) return;
     const keep = this.mfCount;
     this.mfContact = growInt32(this.mfContact, need);
@@ -195,7 +195,7 @@ export abstract class ContactSolver {
     this.keptW = growFloat64(this.keptW, need * Math.max(1, this.q), 0);
   }
 
-  private ensurePoints(need: number): void {
+  protected ensurePoints(need: number): void {
     if (need <= this.target.length) return;
     const keep = this.cpCount;
     this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);

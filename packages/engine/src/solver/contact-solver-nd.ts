@@ -82,7 +82,37 @@ export class ContactSolverND extends ContactSolver3 {
       rows[base + 13] = ib3;
       rows[base + 14] = ib4;
       rows[base + 15] = ib5;
-      this.isoRest4(rows, base, isoA, isoB, imA, imB, ia0, ia1, ia2, ia3, ia4, ia5, ib0, ib1, ib2, ib3, ib4, ib5);
+      // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+      const sa0 = isoA * ia0;
+      const sa1 = isoA * ia1;
+      const sa2 = isoA * ia2;
+      const sa3 = isoA * ia3;
+      const sa4 = isoA * ia4;
+      const sa5 = isoA * ia5;
+      const sb0 = isoB * ib0;
+      const sb1 = isoB * ib1;
+      const sb2 = isoB * ib2;
+      const sb3 = isoB * ib3;
+      const sb4 = isoB * ib4;
+      const sb5 = isoB * ib5;
+      rows[base + 16] = sa0;
+      rows[base + 17] = sa1;
+      rows[base + 18] = sa2;
+      rows[base + 19] = sa3;
+      rows[base + 20] = sa4;
+      rows[base + 21] = sa5;
+      rows[base + 22] = sb0;
+      rows[base + 23] = sb1;
+      rows[base + 24] = sb2;
+      rows[base + 25] = sb3;
+      rows[base + 26] = sb4;
+      rows[base + 27] = sb5;
+      const KA = imA + sa0 * ia0 + sa1 * ia1 + sa2 * ia2 + sa3 * ia3 + sa4 * ia4 + sa5 * ia5;
+      const KB = imB + sb0 * ib0 + sb1 * ib1 + sb2 * ib2 + sb3 * ib3 + sb4 * ib4 + sb5 * ib5;
+      const K = KA + KB;
+      rows[base + 28] = K > 0 ? 1 / K : 0;
+      rows[base + 29] = KA;
+      rows[base + 30] = KB;
       return;
     }
     const ja0 = rA[0] * d1 - rA[1] * d0;
@@ -401,7 +431,37 @@ export class ContactSolverND extends ContactSolver3 {
           rows[base + 13] = jb3;
           rows[base + 14] = jb4;
           rows[base + 15] = jb5;
-          this.isoRest4(rows, base, isoA, isoB, imA, imB, ja0, ja1, ja2, ja3, ja4, ja5, jb0, jb1, jb2, jb3, jb4, jb5);
+          // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+          const sa0 = isoA * ja0;
+          const sa1 = isoA * ja1;
+          const sa2 = isoA * ja2;
+          const sa3 = isoA * ja3;
+          const sa4 = isoA * ja4;
+          const sa5 = isoA * ja5;
+          const sb0 = isoB * jb0;
+          const sb1 = isoB * jb1;
+          const sb2 = isoB * jb2;
+          const sb3 = isoB * jb3;
+          const sb4 = isoB * jb4;
+          const sb5 = isoB * jb5;
+          rows[base + 16] = sa0;
+          rows[base + 17] = sa1;
+          rows[base + 18] = sa2;
+          rows[base + 19] = sa3;
+          rows[base + 20] = sa4;
+          rows[base + 21] = sa5;
+          rows[base + 22] = sb0;
+          rows[base + 23] = sb1;
+          rows[base + 24] = sb2;
+          rows[base + 25] = sb3;
+          rows[base + 26] = sb4;
+          rows[base + 27] = sb5;
+          const KA = imA + sa0 * ja0 + sa1 * ja1 + sa2 * ja2 + sa3 * ja3 + sa4 * ja4 + sa5 * ja5;
+          const KB = imB + sb0 * jb0 + sb1 * jb1 + sb2 * jb2 + sb3 * jb3 + sb4 * jb4 + sb5 * jb5;
+          const K = KA + KB;
+          rows[base + 28] = K > 0 ? 1 / K : 0;
+          rows[base + 29] = KA;
+          rows[base + 30] = KB;
         } else {
           rA[0] = ra0;
           rA[1] = ra1;
@@ -505,63 +565,6 @@ export class ContactSolverND extends ContactSolver3 {
   }
 
   /**
-   * The rest of an n = 4 row of two isotropic bodies from its bivectors J_A, J_B: I⁻¹J = s·J at
-   * 16 and 22, then the effective mass and K_A, K_B at 28..30 (K_X = 1/m_X + Σ (s J)·J, summed in
-   * the general loop's order; imA = imB = 0 for a twist row, where the loop starts at 0).
-   */
-  private isoRest4(
-    rows: Float64Array,
-    base: number,
-    isoA: number,
-    isoB: number,
-    imA: number,
-    imB: number,
-    ja0: number,
-    ja1: number,
-    ja2: number,
-    ja3: number,
-    ja4: number,
-    ja5: number,
-    jb0: number,
-    jb1: number,
-    jb2: number,
-    jb3: number,
-    jb4: number,
-    jb5: number,
-  ): void {
-    const sa0 = isoA * ja0,
-      sa1 = isoA * ja1,
-      sa2 = isoA * ja2,
-      sa3 = isoA * ja3,
-      sa4 = isoA * ja4,
-      sa5 = isoA * ja5;
-    const sb0 = isoB * jb0,
-      sb1 = isoB * jb1,
-      sb2 = isoB * jb2,
-      sb3 = isoB * jb3,
-      sb4 = isoB * jb4,
-      sb5 = isoB * jb5;
-    rows[base + 16] = sa0;
-    rows[base + 17] = sa1;
-    rows[base + 18] = sa2;
-    rows[base + 19] = sa3;
-    rows[base + 20] = sa4;
-    rows[base + 21] = sa5;
-    rows[base + 22] = sb0;
-    rows[base + 23] = sb1;
-    rows[base + 24] = sb2;
-    rows[base + 25] = sb3;
-    rows[base + 26] = sb4;
-    rows[base + 27] = sb5;
-    const KA = imA + sa0 * ja0 + sa1 * ja1 + sa2 * ja2 + sa3 * ja3 + sa4 * ja4 + sa5 * ja5;
-    const KB = imB + sb0 * jb0 + sb1 * jb1 + sb2 * jb2 + sb3 * jb3 + sb4 * jb4 + sb5 * jb5;
-    const K = KA + KB;
-    rows[base + 28] = K > 0 ? 1 / K : 0;
-    rows[base + 29] = KA;
-    rows[base + 30] = KB;
-  }
-
-  /**
    * {@link ContactSolver.buildTwistRow} for n = 4 and two isotropic bodies, written out (the same
    * sums in the same order as the general loop: K_A = 0 + Σ (s_A e)·e).
    */
@@ -613,7 +616,37 @@ export class ContactSolverND extends ContactSolver3 {
     rows[base + 13] = e3;
     rows[base + 14] = e4;
     rows[base + 15] = e5;
-    this.isoRest4(rows, base, isoA, isoB, 0, 0, e0, e1, e2, e3, e4, e5, e0, e1, e2, e3, e4, e5);
+    // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+    const sa0 = isoA * e0;
+    const sa1 = isoA * e1;
+    const sa2 = isoA * e2;
+    const sa3 = isoA * e3;
+    const sa4 = isoA * e4;
+    const sa5 = isoA * e5;
+    const sb0 = isoB * e0;
+    const sb1 = isoB * e1;
+    const sb2 = isoB * e2;
+    const sb3 = isoB * e3;
+    const sb4 = isoB * e4;
+    const sb5 = isoB * e5;
+    rows[base + 16] = sa0;
+    rows[base + 17] = sa1;
+    rows[base + 18] = sa2;
+    rows[base + 19] = sa3;
+    rows[base + 20] = sa4;
+    rows[base + 21] = sa5;
+    rows[base + 22] = sb0;
+    rows[base + 23] = sb1;
+    rows[base + 24] = sb2;
+    rows[base + 25] = sb3;
+    rows[base + 26] = sb4;
+    rows[base + 27] = sb5;
+    const KA = 0 + sa0 * e0 + sa1 * e1 + sa2 * e2 + sa3 * e3 + sa4 * e4 + sa5 * e5;
+    const KB = 0 + sb0 * e0 + sb1 * e1 + sb2 * e2 + sb3 * e3 + sb4 * e4 + sb5 * e5;
+    const K = KA + KB;
+    rows[base + 28] = K > 0 ? 1 / K : 0;
+    rows[base + 29] = KA;
+    rows[base + 30] = KB;
   }
 
   /**

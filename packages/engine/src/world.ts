@@ -25,6 +25,7 @@ import type { ProxyTables } from './contacts/contact-set.js';
 import type { CompoundShape } from './shapes/compound.js';
 import type { Shape } from './shapes/shape.js';
 import type { PairFilter } from './contacts/contact-set.js';
+import type { ManifoldCache } from './contacts/manifold-cache.js';
 import type { ContactSolver } from './solver/contact-solver.js';
 import { AwakeSet, Islands } from './solver/islands.js';
 import { SolverBodies } from './solver/solver-bodies.js';
@@ -212,6 +213,8 @@ export interface WorldKernels {
   readonly contactSolver: (D: Dims, gravity: Float64Array) => ContactSolver;
   /** The box–box separating-axis test for those tables. */
   readonly boxBoxSat: BoxBoxSatKernel;
+  /** Builds the contact set's manifold cache (n, points per slot); the general one if absent. */
+  readonly manifoldCache?: (n: number, pointsPerSlot: number) => ManifoldCache;
 }
 
 /**
@@ -382,7 +385,7 @@ export class WorldBase {
       featureTieTolerance: DEFAULT_FEATURE_TIE_TOLERANCE * unit,
     });
     this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
-    this.contacts = new ContactSet(D.n, this.proxyTables);
+    this.contacts = new ContactSet(D.n, this.proxyTables, kernels.manifoldCache);
     this.solverBodies = new SolverBodies(D);
     this.solver = kernels.contactSolver(D, this.gravityValue);
     this.events = new ContactEvents(D.n);

@@ -740,6 +740,8 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'solverSet',
   ],
   ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
+  // The root World's cache: ManifoldCache with the 4D reuse written out, no field of its own.
+  ManifoldCacheND: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
   TreeBroadphase: [
     'n',
     'margin',
@@ -895,7 +897,7 @@ describe('the snapshot code knows every field', () => {
       ['Body', a],
       ['World', world],
       ['ContactSet', parts.contacts],
-      ['ManifoldCache', parts.contacts.manifoldCache],
+      ['ManifoldCacheND', parts.contacts.manifoldCache],
       ['TreeBroadphase', parts.broadphase],
       ['ContactEvents', parts.events],
       ['PointJoint', new PointJoint(a, b, zero, zero)],

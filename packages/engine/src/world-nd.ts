@@ -6,6 +6,7 @@
  */
 import { dims } from '@physin/algebra';
 import { boxBoxSatKernel } from './collision/box-box-sat.js';
+import { ManifoldCacheND } from './contacts/manifold-cache-nd.js';
 import { ContactSolverND } from './solver/contact-solver-nd.js';
 import { WorldBase } from './world.js';
 import type { WorldOptions } from './world.js';
@@ -31,6 +32,7 @@ export class World extends WorldBase {
     super(options, dims, {
       contactSolver: (D, gravity) => new ContactSolverND(D, gravity),
       boxBoxSat: boxBoxSatKernel,
+      manifoldCache: (n, pointsPerSlot) => new ManifoldCacheND(n, pointsPerSlot),
     });
   }
 }

@@ -29,6 +29,7 @@ import { CONTACT_TOUCHING, CONTACT_WAS_TOUCHING, ContactSet, growFloat64 } from 
 import type { ProxyTables } from './contacts/contact-set.js';
 import type { CompoundShape } from './shapes/compound.js';
 import type { PairFilter } from './contacts/contact-set.js';
+import type { ManifoldCache } from './contacts/manifold-cache.js';
 import type { ContactSolver } from './solver/contact-solver.js';
 import { AwakeSet, Islands } from './solver/islands.js';
 import { SolverBodies } from './solver/solver-bodies.js';
@@ -216,6 +217,8 @@ export interface WorldKernels {
   readonly contactSolver: (D: Dims, gravity: Float64Array) => ContactSolver;
   /** The box–box separating-axis test for those tables. */
   readonly boxBoxSat: BoxBoxSatKernel;
+  /** Builds the contact set's manifold cache (n, points per slot); the general one if absent. */
+  readonly manifoldCache?: (n: number, pointsPerSlot: number) => ManifoldCache;
 }
 
 /**
@@ -393,7 +396,7 @@ export class WorldBase {
       DEFAULT_TORUS_RING_POINTS,
     );
     this.proxyTables = { body: this.bodyOfProxy, shape: [], pose: [], part: [] };
-    this.contacts = new ContactSet(D.n, this.proxyTables);
+    this.contacts = new ContactSet(D.n, this.proxyTables, kernels.manifoldCache);
     this.solverBodies = new SolverBodies(D);
     this.solver = kernels.contactSolver(D, this.gravityValue);
     this.events = new ContactEvents(D.n);

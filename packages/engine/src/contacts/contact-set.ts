@@ -266,7 +266,15 @@ export class ContactSet {
   /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
   private readonly reuseNumbers = new Float64Array(2);
 
-  constructor(n: number, proxies: ProxyTables = { body: [], shape: [], pose: [], part: [] }) {
+  /**
+   * `cache` builds the manifold cache (n, points per slot): the root entry's worlds give one with
+   * the 4D reuse written out (manifold-cache-nd.ts); by default the general one.
+   */
+  constructor(
+    n: number,
+    proxies: ProxyTables = { body: [], shape: [], pose: [], part: [] },
+    cache?: (n: number, pointsPerSlot: number) => ManifoldCache,
+  ) {
     this.n = n;
     this.proxies = proxies;
     this.pointCapacity = maxManifoldPoints(n);
@@ -281,7 +289,7 @@ export class ContactSet {
     this.oldPoints = new Float64Array(this.pointCapacity * n);
     this.oldTaken = new Uint8Array(this.pointCapacity);
     this.newMatched = new Uint8Array(this.pointCapacity);
-    this.cache = new ManifoldCache(n, this.pointCapacity);
+    this.cache = cache !== undefined ? cache(n, this.pointCapacity) : new ManifoldCache(n, this.pointCapacity);
     this.solverSet = {
       order: this.active,
       count: 0,

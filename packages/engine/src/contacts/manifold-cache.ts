@@ -29,16 +29,16 @@ import { growFloat64 } from './grow.js';
 
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
 export class ManifoldCache {
-  private readonly n: number;
-  private readonly P: number;
+  protected readonly n: number;
+  protected readonly P: number;
   /** 1 where the slot holds a cached manifold. */
   private valid = new Uint8Array(16);
   /** Per slot: B's position (n) and rotation (n×n) in A's frame when the manifold was computed. */
   private pose: Float64Array;
   /** Per slot and point: the surface point on A in A's frame, then the one on B in B's frame. */
-  private local: Float64Array;
+  protected local: Float64Array;
   /** Per slot: the normal in A's frame. */
-  private normal: Float64Array;
+  protected normal: Float64Array;
   /** The relative pose of the pair last checked (kept for `store`). */
   private readonly now: Float64Array;
   private readonly world: Float64Array;

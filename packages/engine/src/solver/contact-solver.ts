@@ -112,6 +112,8 @@ export abstract class ContactSolver {
   private shockUpper = new Int32Array(16);
   /** The manifolds in order of their upper body (the first of the two sorts of shockPropagate). */
   private byUpper = new Int32Array(16);
+  /** The upper body of each manifold, by manifold index (see {@link ContactSolver.upperBody}). */
+  private mfUpper = new Int32Array(16);
   private layerCount = new Int32Array(16);
   private upperCount = new Int32Array(16);
   /** The friction patch rows, PR per manifold. */
@@ -206,6 +208,7 @@ export abstract class ContactSolver {
     this.shockOrder = growInt32(this.shockOrder, need);
     this.shockUpper = growInt32(this.shockUpper, need);
     this.byUpper = growInt32(this.byUpper, need);
+    this.mfUpper = growInt32(this.mfUpper, need);
     this.patchRows = growFloat64(this.patchRows, need * this.PR * this.RS, keep * this.PR * this.RS);
     this.lambdaP = growFloat64(this.lambdaP, need * this.m, keep * this.m);
     this.lambdaW = growFloat64(this.lambdaW, need * Math.max(1, this.q), keep * this.q);
@@ -686,16 +689,21 @@ export abstract class ContactSolver {
     this.upperCount = growInt32(this.upperCount, bodies + 1);
     const ucnt = this.upperCount;
     ucnt.fill(0, 0, bodies + 1);
-    for (let mf = 0; mf < this.mfCount; mf += 1) ucnt[this.upperBody(depth, mf) + 1] += 1;
+    const mfUpper = this.mfUpper;
+    for (let mf = 0; mf < this.mfCount; mf += 1) {
+      const up = this.upperBody(depth, mf);
+      mfUpper[mf] = up;
+      ucnt[up + 1] += 1;
+    }
     for (let i = 1; i <= bodies; i += 1) ucnt[i] += ucnt[i - 1];
     const byUpper = this.byUpper;
-    for (let mf = 0; mf < this.mfCount; mf += 1) byUpper[ucnt[this.upperBody(depth, mf)]++] = mf;
+    for (let mf = 0; mf < this.mfCount; mf += 1) byUpper[ucnt[mfUpper[mf]]++] = mf;
     for (let i = 0; i < this.mfCount; i += 1) {
       const mf = byUpper[i];
       const layer = Math.min(depth[this.mfA[mf]], depth[this.mfB[mf]]) + 1;
       const at = cnt[layer]++;
       this.shockOrder[at] = mf;
-      this.shockUpper[at] = this.upperBody(depth, mf);
+      this.shockUpper[at] = mfUpper[mf];
     }
     if (maxDepth < TALL_LAYERS) {
       for (let it = 0; it < passes; it += 1) if (this.shockPass(sb, SHOCK_INNER_SWEEPS)) return;

@@ -32,7 +32,10 @@ import { growFloat64, growInt32 } from './grow.js';
 export const CONTACT_TOUCHING = 1;
 /** Flag: the pair touched at the end of the previous sub-step (for begin / end events). */
 export const CONTACT_WAS_TOUCHING = 2;
-/** Flag: the manifold was refreshed in this sub-step (one of the bodies is awake). */
+/**
+ * Flag: the manifold was refreshed in this sub-step (one of the bodies is awake) and holds points:
+ * the slot gives the solver rows.
+ */
 export const CONTACT_ACTIVE = 4;
 /**
  * Flag: one of the two bodies is a sensor. The slot tells overlap (CONTACT_TOUCHING: some point
@@ -843,7 +846,9 @@ export class ContactSet {
         if (apart) {
           m.count = 0;
           this.cache.forget(slot);
-          this.flags[slot] = flags | CONTACT_ACTIVE;
+          // Not CONTACT_ACTIVE: no points, so the solver's prepare skips the slot without
+          // reading its manifold (most slots of a pile: a cache miss each).
+          this.flags[slot] = flags;
           continue;
         }
       }
@@ -861,7 +866,7 @@ export class ContactSet {
           this.cache.reuse(slot, m, pA, pB);
           let touching = false;
           for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
-          this.flags[slot] = flags | CONTACT_ACTIVE | (touching ? CONTACT_TOUCHING : 0);
+          this.flags[slot] = flags | (m.count > 0 ? CONTACT_ACTIVE : 0) | (touching ? CONTACT_TOUCHING : 0);
           continue;
         }
       }
@@ -959,7 +964,7 @@ export class ContactSet {
       let carried = false;
       for (let q = 0; q < oldCount; q += 1) if (oldTaken[q]) carried = true;
       if (!carried) this.clearPatch(slot);
-      flags |= CONTACT_ACTIVE;
+      if (m.count > 0) flags |= CONTACT_ACTIVE;
       if (touching) flags |= CONTACT_TOUCHING;
       this.flags[slot] = flags;
     }

@@ -43,6 +43,13 @@ export const CONTACT_ACTIVE = 4;
  * CONTACT_ACTIVE), no island link, no waking.
  */
 export const CONTACT_SENSOR = 8;
+/**
+ * Flag: the manifold may hold points though the slot is neither CONTACT_ACTIVE nor a sensor's (a
+ * pair of two bodies that do not move, in a set used without a world). With those two it tells
+ * `updateManifolds` whether a pair found apart must empty its manifold: most slots of a pile are
+ * apart and already empty, and writing their manifolds cost a cache miss each.
+ */
+const CONTACT_POINTS = 16;
 
 /**
  * A pair filter: called with the two bodies of a pair whose boxes overlap, each time the
@@ -492,7 +499,10 @@ export class ContactSet {
         continue;
       }
       const f = this.flags[slot];
-      this.flags[slot] = (f & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0) | (f & (CONTACT_TOUCHING | CONTACT_SENSOR));
+      this.flags[slot] =
+        (f & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0) |
+        (f & (CONTACT_TOUCHING | CONTACT_SENSOR)) |
+        (f & (CONTACT_ACTIVE | CONTACT_POINTS) ? CONTACT_POINTS : 0);
     }
     this.activeCount = a;
   }
@@ -844,7 +854,7 @@ export class ContactSet {
           }
         }
         if (apart) {
-          m.count = 0;
+          if (this.flags[slot] & (CONTACT_ACTIVE | CONTACT_SENSOR | CONTACT_POINTS)) m.count = 0;
           this.cache.forget(slot);
           // Not CONTACT_ACTIVE: no points, so the solver's prepare skips the slot without
           // reading its manifold (most slots of a pile: a cache miss each).

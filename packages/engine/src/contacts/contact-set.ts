@@ -788,8 +788,9 @@ export class ContactSet {
    * carries the impulses of points whose feature id survived; a point with a new id takes those of
    * the nearest unclaimed old point within `params.contactMargin`. `params.contactMargin` is the margin;
    * `reach` adds the distance each body can close in one sub-step (speculative contacts), per
-   * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
-   * previous touching state in CONTACT_WAS_TOUCHING. Allocates nothing.
+   * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE (on slots whose manifold holds
+   * points) and CONTACT_TOUCHING, and keeps the previous touching state in CONTACT_WAS_TOUCHING.
+   * Allocates nothing.
    */
   updateManifolds(
     params: Readonly<Params>,

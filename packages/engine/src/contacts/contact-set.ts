@@ -32,7 +32,10 @@ import { growFloat64, growInt32 } from './grow.js';
 export const CONTACT_TOUCHING = 1;
 /** Flag: the pair touched at the end of the previous sub-step (for begin / end events). */
 export const CONTACT_WAS_TOUCHING = 2;
-/** Flag: the manifold was refreshed in this sub-step (one of the bodies is awake). */
+/**
+ * Flag: the manifold was refreshed in this sub-step (one of the bodies is awake) and holds points:
+ * the slot gives the solver rows.
+ */
 export const CONTACT_ACTIVE = 4;
 /**
  * Flag: one of the two bodies is a sensor. The slot tells overlap (CONTACT_TOUCHING: some point
@@ -40,6 +43,13 @@ export const CONTACT_ACTIVE = 4;
  * CONTACT_ACTIVE), no island link, no waking.
  */
 export const CONTACT_SENSOR = 8;
+/**
+ * Flag: the manifold may hold points though the slot is neither CONTACT_ACTIVE nor a sensor's (a
+ * pair of two bodies that do not move, in a set used without a world). With those two it tells
+ * `updateManifolds` whether a pair found apart must empty its manifold: most slots of a pile are
+ * apart and already empty, and writing their manifolds cost a cache miss each.
+ */
+const CONTACT_POINTS = 16;
 
 /**
  * A pair filter: called with the two bodies of a pair whose boxes overlap, each time the
@@ -489,7 +499,10 @@ export class ContactSet {
         continue;
       }
       const f = this.flags[slot];
-      this.flags[slot] = (f & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0) | (f & (CONTACT_TOUCHING | CONTACT_SENSOR));
+      this.flags[slot] =
+        (f & CONTACT_TOUCHING ? CONTACT_WAS_TOUCHING : 0) |
+        (f & (CONTACT_TOUCHING | CONTACT_SENSOR)) |
+        (f & (CONTACT_ACTIVE | CONTACT_POINTS) ? CONTACT_POINTS : 0);
     }
     this.activeCount = a;
   }
@@ -775,8 +788,9 @@ export class ContactSet {
    * carries the impulses of points whose feature id survived; a point with a new id takes those of
    * the nearest unclaimed old point within `params.contactMargin`. `params.contactMargin` is the margin;
    * `reach` adds the distance each body can close in one sub-step (speculative contacts), per
-   * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE and CONTACT_TOUCHING, and keeps the
-   * previous touching state in CONTACT_WAS_TOUCHING. Allocates nothing.
+   * world index; `tightMin` / `tightMax` are the broadphase's tight boxes per proxy id. Sets CONTACT_ACTIVE (on slots whose manifold holds
+   * points) and CONTACT_TOUCHING, and keeps the previous touching state in CONTACT_WAS_TOUCHING.
+   * Allocates nothing.
    */
   updateManifolds(
     params: Readonly<Params>,
@@ -841,9 +855,11 @@ export class ContactSet {
           }
         }
         if (apart) {
-          m.count = 0;
+          if (this.flags[slot] & (CONTACT_ACTIVE | CONTACT_SENSOR | CONTACT_POINTS)) m.count = 0;
           this.cache.forget(slot);
-          this.flags[slot] = flags | CONTACT_ACTIVE;
+          // Not CONTACT_ACTIVE: no points, so the solver's prepare skips the slot without
+          // reading its manifold (most slots of a pile: a cache miss each).
+          this.flags[slot] = flags;
           continue;
         }
       }
@@ -861,7 +877,7 @@ export class ContactSet {
           this.cache.reuse(slot, m, pA, pB);
           let touching = false;
           for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
-          this.flags[slot] = flags | CONTACT_ACTIVE | (touching ? CONTACT_TOUCHING : 0);
+          this.flags[slot] = flags | (m.count > 0 ? CONTACT_ACTIVE : 0) | (touching ? CONTACT_TOUCHING : 0);
           continue;
         }
       }
@@ -959,7 +975,7 @@ export class ContactSet {
       let carried = false;
       for (let q = 0; q < oldCount; q += 1) if (oldTaken[q]) carried = true;
       if (!carried) this.clearPatch(slot);
-      flags |= CONTACT_ACTIVE;
+      if (m.count > 0) flags |= CONTACT_ACTIVE;
       if (touching) flags |= CONTACT_TOUCHING;
       this.flags[slot] = flags;
     }

@@ -9,7 +9,7 @@
 import type { Body } from '../body.js';
 import { MOTION_DYNAMIC } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
-import { CONTACT_ACTIVE } from '../contacts/contact-set.js';
+import { CONTACT_ACTIVE, growInt32 } from '../contacts/contact-set.js';
 import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
 import { SOLVE_BIAS, SOLVE_CHANGE, SOLVE_H, SOLVE_SLOP, SOLVE_THRESHOLD, SOLVE_TOLERANCE } from './contact-solver.js';
@@ -24,6 +24,15 @@ export class ContactSolverND extends ContactSolver3 {
    * @internal
    */
   writtenOut = true;
+
+  /**
+   * n >= 4: whether manifold mf's next Gauss–Seidel pass takes its normal rows last to first.
+   * Passes alternate the order (symmetric Gauss–Seidel over the 2^(n−1) corners of a face), the
+   * first of a sub-step backwards; the shock passes keep the forward order. In one order the
+   * first corner visited takes most of a landing's impulse, and the box tips: a 4D stack of 9
+   * landed swaying (5 mm/s) and took 265 steps to come to rest; alternating, about 205.
+   */
+  private mfReverse = new Int32Array(16);
 
   protected override buildRow(rows: Float64Array, base: number, a: number, b: number, sb: SolverBodies): void {
     if (this.writtenOut && this.n === 3) super.buildRow(rows, base, a, b, sb);
@@ -274,7 +283,20 @@ export class ContactSolverND extends ContactSolver3 {
    * its general loops, so bit-identical (keep the two in step).
    */
   override prepare(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
-    if (!this.writtenOut || this.n !== 4) return super.prepare(contacts, sb, stepConstants, p);
+    const points =
+      this.writtenOut && this.n === 4
+        ? this.prepare4(contacts, sb, stepConstants, p)
+        : super.prepare(contacts, sb, stepConstants, p);
+    if (this.n >= 4) {
+      // Every manifold's first pass of the sub-step takes its points last to first (see mfReverse).
+      this.mfReverse = growInt32(this.mfReverse, this.mfCount);
+      this.mfReverse.fill(1, 0, this.mfCount);
+    }
+    return points;
+  }
+
+  /** {@link ContactSolverND.prepare} for n = 4 (see there). */
+  private prepare4(contacts: ContactSet, sb: SolverBodies, stepConstants: Float64Array, p: Readonly<Params>): number {
     this.shocked = false;
     const c = this.constants;
     const h = stepConstants[STEP_H];
@@ -962,7 +984,14 @@ export class ContactSolverND extends ContactSolver3 {
         }
       }
     }
-    for (let cp = first; cp < last; cp += 1) {
+    // n >= 4: every other pass takes the points last to first (see mfReverse).
+    let reverse = 0;
+    if (!shock && n >= 4) {
+      reverse = this.mfReverse[mf];
+      this.mfReverse[mf] = reverse ^ 1;
+    }
+    for (let i = first; i < last; i += 1) {
+      const cp = reverse === 0 ? i : first + last - 1 - i;
       const rb = cp * RS;
       const K = fa * rows[rb + RS - 2] + fb * rows[rb + RS - 1];
       if (!(K > 0)) continue;
@@ -1309,7 +1338,14 @@ export class ContactSolverND extends ContactSolver3 {
         }
       }
     }
-    for (let cp = first; cp < last; cp += 1) {
+    // Every other pass takes the points last to first (see mfReverse).
+    let reverse = 0;
+    if (!shock) {
+      reverse = this.mfReverse[mf];
+      this.mfReverse[mf] = reverse ^ 1;
+    }
+    for (let i = first; i < last; i += 1) {
+      const cp = reverse === 0 ? i : first + last - 1 - i;
       const rb = cp * 31;
       const K = fa * rows[rb + 29] + fb * rows[rb + 30];
       if (!(K > 0)) continue;

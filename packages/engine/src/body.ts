@@ -141,6 +141,31 @@ function checkSensorFlag(fn: string, label: string, value: unknown): boolean {
   return value;
 }
 
+/**
+ * @internal Where the fields of a body record start (see `Body.storage`): x at 0, R at n, then v,
+ * L, w, force, torque. The step reads the record through these rather than the views, which a
+ * body makes only when asked for.
+ */
+export function recordV(D: Dims): number {
+  return D.n + D.r;
+}
+/** @internal Where L starts in a body record (see {@link recordV}). */
+export function recordL(D: Dims): number {
+  return 2 * D.n + D.r;
+}
+/** @internal Where w starts in a body record (see {@link recordV}). */
+export function recordW(D: Dims): number {
+  return 2 * D.n + D.r + D.k;
+}
+/** @internal Where the force starts in a body record (see {@link recordV}). */
+export function recordForce(D: Dims): number {
+  return 2 * D.n + D.r + 2 * D.k;
+}
+/** @internal Where the torque starts in a body record (see {@link recordV}). */
+export function recordTorque(D: Dims): number {
+  return 3 * D.n + D.r + 2 * D.k;
+}
+
 let nextBodyId = 1;
 
 /**
@@ -319,7 +344,7 @@ function wedgeSumFinite(D: Dims, out: Float64Array, base: Float64Array, a: Array
 /**
  * A rigid body in n dimensions.
  *
- * **State** (SI units, world frame), all `Float64Array` views into one buffer the body owns:
+ * **State** (SI units, world frame), all `Float64Array` views of the body's record (each made when first read):
  * - `x` (n): position of the centre of mass (m);
  * - `R` (r = 2^(n−1)): orientation rotor; a body point at ξ in the body frame is at x + R ξ R~;
  * - `v` (n): linear velocity of the centre of mass (m/s);
@@ -466,13 +491,14 @@ export class Body {
   /** @internal Largest distance of a shape point from the centre of mass (m); 0 for a half-space. */
   boundingRadius = 0;
 
-  private xView!: Float64Array;
-  private rView!: Float64Array;
-  private vView!: Float64Array;
-  private lView!: Float64Array;
-  private wView!: Float64Array;
-  private fView!: Float64Array;
-  /** Made when first asked for (a torque is rare: most bodies never need the view). */
+  // The views of the record, each made when first asked for: a view is a heap object, and a world
+  // of 32,000 bodies that the step moves through `storage` alone never needs most of them.
+  private xView: Float64Array | null = null;
+  private rView: Float64Array | null = null;
+  private vView: Float64Array | null = null;
+  private lView: Float64Array | null = null;
+  private wView: Float64Array | null = null;
+  private fView: Float64Array | null = null;
   private tView: Float64Array | null = null;
 
   /**
@@ -640,15 +666,24 @@ export class Body {
     if (!shares) this.fillInverseInertia();
     this.storage = block;
     this.storageOffset = start;
-    this.bindViews();
 
+    // The record is written through `block` (no view made): a ball or box placed by position alone
+    // gets no view at all until something reads one.
     const K = D.kernels;
-    const R = this.rView;
-    if (options.rotor !== undefined) {
-      R.set(options.rotor);
-      if (K.defect(R) > 0) K.correct(R, R);
+    if (options.rotor !== undefined || frameRotor !== undefined) {
+      const R = this.R;
+      if (options.rotor !== undefined) {
+        R.set(options.rotor);
+        if (K.defect(R) > 0) K.correct(R, R);
+      } else {
+        R[0] = 1;
+      }
+      if (frameRotor !== undefined) {
+        K.mul(R, R, Float64Array.from(frameRotor));
+        if (K.defect(R) > 0) K.correct(R, R);
+      }
     } else {
-      R[0] = 1;
+      block[start + n] = 1;
     }
     let comOffset: Float64Array | null = null;
     if (frameOffset !== undefined && !isZero(frameOffset)) {
@@ -659,16 +694,17 @@ export class Body {
       else comOffset.set(frameOffset);
     }
     this.comOffset = comOffset;
-    if (frameRotor !== undefined) {
-      K.mul(R, R, Float64Array.from(frameRotor));
-      if (K.defect(R) > 0) K.correct(R, R);
-    }
-    if (options.position !== undefined) this.xView.set(options.position);
+    const position = options.position;
+    if (position !== undefined) for (let i = 0; i < n; i += 1) block[start + i] = position[i]!;
     this.placeCentreOfMass();
     this.boundingRadius = shapeBoundingRadius(D.n, shape);
-    if (options.velocity !== undefined) this.vView.set(options.velocity);
+    const velocity = options.velocity;
+    if (velocity !== undefined) {
+      const at = start + recordV(D);
+      for (let i = 0; i < n; i += 1) block[at + i] = velocity[i]!;
+    }
     if (options.angularVelocity !== undefined) {
-      this.wView.set(options.angularVelocity);
+      this.w.set(options.angularVelocity);
       this.momentumFromOmega();
     }
   }
@@ -695,31 +731,31 @@ export class Body {
 
   /** Position of the centre of mass (m, n numbers). */
   get x(): Float64Array {
-    return this.xView;
+    return this.xView ?? (this.xView = this.cut(0, this.D.n));
   }
   /** Orientation rotor (r numbers). */
   get R(): Float64Array {
-    return this.rView;
+    return this.rView ?? (this.rView = this.cut(this.D.n, this.D.r));
   }
   /** Linear velocity (m/s, n numbers). */
   get v(): Float64Array {
-    return this.vView;
+    return this.vView ?? (this.vView = this.cut(recordV(this.D), this.D.n));
   }
   /** Angular momentum about the centre of mass, world frame (kg·m²/s, k numbers). */
   get L(): Float64Array {
-    return this.lView;
+    return this.lView ?? (this.lView = this.cut(recordL(this.D), this.D.k));
   }
   /** Angular velocity, world frame (rad/s, k numbers): I_world⁻¹ L. */
   get w(): Float64Array {
-    return this.wView;
+    return this.wView ?? (this.wView = this.cut(recordW(this.D), this.D.k));
   }
   /** Force accumulated since the last step (N, n numbers). */
   get force(): Float64Array {
-    return this.fView;
+    return this.fView ?? (this.fView = this.cut(recordForce(this.D), this.D.n));
   }
   /** Torque accumulated since the last step (N·m, bivector, k numbers). */
   get torque(): Float64Array {
-    return this.tView ?? this.bindTorque();
+    return this.tView ?? (this.tView = this.cut(recordTorque(this.D), this.D.k));
   }
 
   /** A short description for messages: `body 7 ('crate')`. */
@@ -798,7 +834,7 @@ export class Body {
     storage.set(this.storage.subarray(this.storageOffset, this.storageOffset + len), offset);
     this.storage = storage;
     this.storageOffset = offset;
-    this.bindViews();
+    this.dropViews();
   }
 
   /**
@@ -809,33 +845,21 @@ export class Body {
     return this.storage.subarray(this.storageOffset, this.storageOffset + Body.stateLength(this.D));
   }
 
-  private bindViews(): void {
-    const { n, r, k } = this.D;
+  /** A view of `len` numbers of the record at `at`, made straight on the buffer (subarray() looks up the species constructor). */
+  private cut(at: number, len: number): Float64Array {
     const s = this.storage;
-    const buffer = s.buffer;
-    // Views made straight on the buffer: subarray() looks up the species constructor each time.
-    let at = s.byteOffset + this.storageOffset * 8;
-    this.xView = new Float64Array(buffer, at, n);
-    at += n * 8;
-    this.rView = new Float64Array(buffer, at, r);
-    at += r * 8;
-    this.vView = new Float64Array(buffer, at, n);
-    at += n * 8;
-    this.lView = new Float64Array(buffer, at, k);
-    at += k * 8;
-    this.wView = new Float64Array(buffer, at, k);
-    at += k * 8;
-    this.fView = new Float64Array(buffer, at, n);
-    this.tView = null; // (made again on the new storage when asked for)
+    return new Float64Array(s.buffer, s.byteOffset + (this.storageOffset + at) * 8, len);
   }
 
-  /** Makes the torque view (after force in the record) and returns it. */
-  private bindTorque(): Float64Array {
-    const s = this.storage;
-    const at = s.byteOffset + (this.storageOffset + Body.stateLength(this.D) + this.D.n) * 8;
-    const view = new Float64Array(s.buffer, at, this.D.k);
-    this.tView = view;
-    return view;
+  /** Forgets the views (made again on the current storage when asked for). */
+  private dropViews(): void {
+    this.xView = null;
+    this.rView = null;
+    this.vView = null;
+    this.lView = null;
+    this.wView = null;
+    this.fView = null;
+    this.tView = null;
   }
 
   /**
@@ -866,16 +890,16 @@ export class Body {
   /** L = I_world ω from the current w (massless: L = 0). */
   private momentumFromOmega(): void {
     if (this.massValue > 0) {
-      momentumFromAngularVelocity(this.D, this.lView, this.rView, this.inertia, this.wView, scratchFor(this.D).tmp);
+      momentumFromAngularVelocity(this.D, this.L, this.R, this.inertia, this.w, scratchFor(this.D).tmp);
     } else {
-      this.lView.fill(0);
+      this.L.fill(0);
     }
   }
 
   /** @internal ω = I_world⁻¹ L for a dynamic body (call after any change of L or R). */
   omegaFromMomentum(): void {
     if (this.motion === MOTION_DYNAMIC) {
-      angularVelocityFromMomentum(this.D, this.wView, this.rView, this.invInertia, this.lView, scratchFor(this.D).tmp);
+      angularVelocityFromMomentum(this.D, this.w, this.R, this.invInertia, this.L, scratchFor(this.D).tmp);
     }
   }
 
@@ -884,8 +908,8 @@ export class Body {
     const off = this.comOffset;
     if (off === null) return;
     const c = scratchFor(this.D).vector;
-    this.D.kernels.applyVector(c, this.rView, off);
-    for (let i = 0; i < this.D.n; i += 1) this.xView[i] = this.xView[i]! + c[i]!;
+    this.D.kernels.applyVector(c, this.R, off);
+    for (let i = 0; i < this.D.n; i += 1) this.x[i] = this.x[i]! + c[i]!;
   }
 
   /**
@@ -895,9 +919,9 @@ export class Body {
   kineticEnergy(): number {
     if (this.massValue === 0) return 0;
     let lin = 0;
-    for (let i = 0; i < this.D.n; i += 1) lin += this.vView[i]! * this.vView[i]!;
+    for (let i = 0; i < this.D.n; i += 1) lin += this.v[i]! * this.v[i]!;
     let ang = 0;
-    for (let p = 0; p < this.D.k; p += 1) ang += this.lView[p]! * this.wView[p]!;
+    for (let p = 0; p < this.D.k; p += 1) ang += this.L[p]! * this.w[p]!;
     return 0.5 * (this.massValue * lin + ang);
   }
 
@@ -910,11 +934,11 @@ export class Body {
     if (!(out instanceof Float64Array) || out.length !== n) {
       throw new TypeError(`Body.getPositionN: argument 'out' must be a Float64Array of length ${n}`);
     }
-    out.set(this.xView);
+    out.set(this.x);
     const off = this.comOffset;
     if (off !== null) {
       const c = scratchFor(this.D).vector;
-      this.D.kernels.applyVector(c, this.rView, off);
+      this.D.kernels.applyVector(c, this.R, off);
       for (let i = 0; i < n; i += 1) out[i] = out[i]! - c[i]!;
     }
     return out;
@@ -928,7 +952,7 @@ export class Body {
   setPositionN(p: ArrayLike<number>): this {
     checkVector(this.D, 'p', p, 'Body.setPositionN');
     checkComponents('Body.setPositionN', "argument 'p'", p, inputLimits.maxPosition, 'm');
-    this.xView.set(p);
+    this.x.set(p);
     this.placeCentreOfMass();
     this.movedByHand();
     return this;
@@ -944,9 +968,9 @@ export class Body {
     checkPlane(this.D, 'i', i, 'j', j, fn);
     checkNumber('angle', angle, fn);
     const origin = this.comOffset === null ? null : this.getPositionN();
-    rotorRotateInPlane(this.D, this.rView, this.rView, i, j, angle);
+    rotorRotateInPlane(this.D, this.R, this.R, i, j, angle);
     if (origin !== null) {
-      this.xView.set(origin);
+      this.x.set(origin);
       this.placeCentreOfMass();
     }
     if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
@@ -962,7 +986,7 @@ export class Body {
     if (this.motion === MOTION_STATIC && !isZero(v)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot move (argument 'v' must be zero)`);
     }
-    this.vView.set(v);
+    this.v.set(v);
     this.wake();
     return this;
   }
@@ -978,7 +1002,7 @@ export class Body {
     if (this.motion === MOTION_STATIC && !isZero(w)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot turn (argument 'w' must be zero)`);
     }
-    this.wView.set(w);
+    this.w.set(w);
     this.momentumFromOmega();
     this.wake();
     return this;
@@ -994,8 +1018,8 @@ export class Body {
     checkComponents(fn, "argument 'j'", j, inputLimits.maxImpulse, 'N·s');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
-    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.v, j, im, inputLimits.maxVelocity, 'm/s');
+    for (let i = 0; i < this.D.n; i += 1) this.v[i] = this.v[i]! + j[i]! * im;
     this.wake();
     return this;
   }
@@ -1013,14 +1037,14 @@ export class Body {
     checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.v, j, im, inputLimits.maxVelocity, 'm/s');
     // the new L and its ω first, into scratch: committed only if both are finite
     const scratch = scratchFor(this.D);
     const L = scratch.bivector;
     const w = scratch.omega;
-    let finite = wedgeSumFinite(this.D, L, this.lView, r, j);
+    let finite = wedgeSumFinite(this.D, L, this.L, r, j);
     if (finite) {
-      angularVelocityFromMomentum(this.D, w, this.rView, this.invInertia, L, scratch.tmp);
+      angularVelocityFromMomentum(this.D, w, this.R, this.invInertia, L, scratch.tmp);
       for (let p = 0; p < this.D.k; p += 1) if (!Number.isFinite(w[p]!)) finite = false;
     }
     if (!finite)
@@ -1030,15 +1054,15 @@ export class Body {
     const maxW = inputLimits.maxAngularVelocity;
     for (let p = 0; p < this.D.k; p += 1) {
       const a = Math.abs(w[p]!);
-      if (!(a <= maxW || a <= Math.abs(this.wView[p]!))) {
+      if (!(a <= maxW || a <= Math.abs(this.w[p]!))) {
         throw new RangeError(
           `${fn}: arguments 'j' and 'r' would make ${this.label}'s angular velocity[${p}] ${w[p]}, beyond ±${formatBound(maxW)} rad/s (Body.limits); nothing was changed`,
         );
       }
     }
-    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
-    this.lView.set(L);
-    this.wView.set(w);
+    for (let i = 0; i < this.D.n; i += 1) this.v[i] = this.v[i]! + j[i]! * im;
+    this.L.set(L);
+    this.w.set(w);
     this.wake();
     return this;
   }
@@ -1049,9 +1073,9 @@ export class Body {
     checkVector(this.D, 'f', f, fn);
     checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
-    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
-    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    checkSumBounded(fn, 'f', this.label, 'force', this.force, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.force, f, this.invMass);
+    for (let i = 0; i < this.D.n; i += 1) this.force[i] = this.force[i]! + f[i]!;
     this.wake();
     return this;
   }
@@ -1067,8 +1091,8 @@ export class Body {
     checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
     checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
-    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
+    checkSumBounded(fn, 'f', this.label, 'force', this.force, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.force, f, this.invMass);
     const torque = scratchFor(this.D).bivector;
     if (!wedgeSumFinite(this.D, torque, this.torque, r, f)) {
       throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
@@ -1083,7 +1107,7 @@ export class Body {
       }
     }
     this.checkAngularAcceleration(fn, "arguments 'f' and 'r'", torque);
-    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    for (let i = 0; i < this.D.n; i += 1) this.force[i] = this.force[i]! + f[i]!;
     this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
@@ -1117,12 +1141,12 @@ export class Body {
     }
     const frame = this.shape.frameRotor;
     if (frame === undefined) {
-      out.set(this.rView);
+      out.set(this.R);
       return out;
     }
     const inv = scratchFor(this.D).rotor;
     rotorReverse(this.D, inv, frame);
-    this.D.kernels.mul(out, this.rView, inv);
+    this.D.kernels.mul(out, this.R, inv);
     return out;
   }
 
@@ -1145,11 +1169,11 @@ export class Body {
     }
     const origin = this.comOffset === null ? null : this.getPositionN(scratchFor(this.D).origin);
     const frame = this.shape.frameRotor;
-    if (frame !== undefined) K.mul(this.rView, next, frame);
-    else this.rView.set(next);
-    if (K.defect(this.rView) > 0) K.correct(this.rView, this.rView);
+    if (frame !== undefined) K.mul(this.R, next, frame);
+    else this.R.set(next);
+    if (K.defect(this.R) > 0) K.correct(this.R, this.R);
     if (origin !== null) {
-      this.xView.set(origin);
+      this.x.set(origin);
       this.placeCentreOfMass();
     }
     if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
@@ -1219,9 +1243,9 @@ export class Body {
       this.ownInertia();
       this.inertia.fill(0);
       this.fillInverseInertia();
-      this.vView.fill(0);
-      this.lView.fill(0);
-      this.wView.fill(0);
+      this.v.fill(0);
+      this.L.fill(0);
+      this.w.fill(0);
       this.clearForces();
       this.sleeping = false;
       this.owner?.onBodyChanged(this);
@@ -1233,7 +1257,7 @@ export class Body {
     // L = I_world ω with the new inertia, into scratch: committed only if finite
     const scratch = scratchFor(this.D);
     const L = scratch.bivector;
-    momentumFromAngularVelocity(this.D, L, this.rView, mp.inertia, this.wView, scratch.tmp);
+    momentumFromAngularVelocity(this.D, L, this.R, mp.inertia, this.w, scratch.tmp);
     for (let p = 0; p < this.D.k; p += 1) {
       if (!Number.isFinite(L[p]!)) {
         throw new RangeError(
@@ -1247,7 +1271,7 @@ export class Body {
     this.ownInertia();
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
-    this.lView.set(L);
+    this.L.set(L);
     this.sleeping = false;
     this.sleepTimer = 0;
     this.owner?.onBodyChanged(this);
@@ -1261,11 +1285,11 @@ export class Body {
   private checkAngularAcceleration(fn: string, what: string, torque: Float64Array): void {
     const scratch = scratchFor(this.D);
     const max = inputLimits.maxAngularAcceleration;
-    angularVelocityFromMomentum(this.D, scratch.omega, this.rView, this.invInertia, torque, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.omega, this.R, this.invInertia, torque, scratch.tmp);
     let next = 0;
     for (let p = 0; p < this.D.k; p += 1) next = Math.max(next, Math.abs(scratch.omega[p]!));
     if (next <= max) return;
-    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.torque, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.alpha, this.R, this.invInertia, this.torque, scratch.tmp);
     let now = 0;
     for (let p = 0; p < this.D.k; p += 1) now = Math.max(now, Math.abs(scratch.alpha[p]!));
     if (next <= now) return;
@@ -1276,7 +1300,10 @@ export class Body {
 
   /** @internal Clears the accumulated force and torque. */
   clearForces(): void {
-    this.fView.fill(0);
+    const s = this.storage;
+    const n = this.D.n;
+    const at = this.storageOffset + recordForce(this.D);
+    for (let i = 0; i < n; i += 1) s[at + i] = 0;
     if (this.hasTorque) {
       this.torque.fill(0);
       this.hasTorque = false;

@@ -5,7 +5,7 @@
  */
 import { checkInteger, checkNumber, checkVector, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
-import { Body, MOTION_DYNAMIC, MOTION_STATIC } from './body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC, recordV, recordW } from './body.js';
 import type { BodyOwner } from './body.js';
 import { computeBoundsUnchecked } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
@@ -132,10 +132,12 @@ interface WorldScratch {
   readonly normal: Float64Array;
   /** [0] |v| and [1] |ω| of the body the broadphase stage is on. */
   readonly speeds: Float64Array;
+  /** r numbers: a body's rotor copied from its record (the body's own view may not exist). */
+  readonly rotorCopy: Float64Array;
 }
 
 /**
- * The Euclidean norm of `a` into `out[slot]`, without overflow for huge finite entries (then
+ * The Euclidean norm of a[at .. at + len) into `out[slot]`, without overflow for huge finite entries (then
  * scaled by the largest); Infinity or NaN when an entry is not finite.
  *
  * Why an out-parameter: a double returned by a call V8 does not inline is boxed into a fresh heap
@@ -143,21 +145,22 @@ interface WorldScratch {
  * it cost two heap numbers per moving body per sub-step whenever it was not (the allocation test
  * caught it on a busy CI machine).
  */
-function robustNormInto(out: Float64Array, slot: number, a: Float64Array): void {
+function robustNormInto(out: Float64Array, slot: number, a: Float64Array, at: number, len: number): void {
+  const end = at + len;
   let s = 0;
-  for (let i = 0; i < a.length; i += 1) s += a[i]! * a[i]!;
+  for (let i = at; i < end; i += 1) s += a[i]! * a[i]!;
   if (s < Infinity) {
     out[slot] = Math.sqrt(s);
     return;
   }
   let big = 0;
-  for (let i = 0; i < a.length; i += 1) big = Math.max(big, Math.abs(a[i]!));
+  for (let i = at; i < end; i += 1) big = Math.max(big, Math.abs(a[i]!));
   if (!(big < Infinity)) {
     out[slot] = big;
     return;
   }
   s = 0;
-  for (let i = 0; i < a.length; i += 1) {
+  for (let i = at; i < end; i += 1) {
     const q = a[i]! / big;
     s += q * q;
   }
@@ -383,6 +386,7 @@ export class WorldBase {
       max: new Float64Array(D.n),
       normal: new Float64Array(D.n),
       speeds: new Float64Array(2),
+      rotorCopy: new Float64Array(this.D.r),
     };
     this.constants = createStepConstants();
     const unit = params.lengthUnit;
@@ -897,10 +901,15 @@ export class WorldBase {
   private updatePose(body: Body): void {
     const pose = body.pose!;
     // A loop, not pose.x.set(): a builtin call costs more than copying n numbers.
+    // Read from the record: the body's views are made only when something asks for them.
     const px = pose.x;
-    const x = body.x;
-    for (let i = 0; i < px.length; i += 1) px[i] = x[i]!;
-    this.D.kernels.toMatrix(pose.M, body.R);
+    const s = body.storage;
+    const at = body.storageOffset;
+    const n = px.length;
+    for (let i = 0; i < n; i += 1) px[i] = s[at + i]!;
+    const R = this.scratch.rotorCopy;
+    for (let i = 0; i < R.length; i += 1) R[i] = s[at + n + i]!;
+    this.D.kernels.toMatrix(pose.M, R);
     // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
     const id = body.proxyId;
     if (id < 0) return;
@@ -1060,8 +1069,9 @@ export class WorldBase {
    */
   private reachAndMove(body: Body): boolean {
     const speeds = this.scratch.speeds;
-    robustNormInto(speeds, 0, body.v);
-    robustNormInto(speeds, 1, body.w);
+    const D = this.D;
+    robustNormInto(speeds, 0, body.storage, body.storageOffset + recordV(D), D.n);
+    robustNormInto(speeds, 1, body.storage, body.storageOffset + recordW(D), D.k);
     const speed = speeds[0]!;
     const spin = speeds[1]!;
     if (!(speed < Infinity) || !(spin < Infinity)) return false;

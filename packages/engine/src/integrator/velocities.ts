@@ -8,7 +8,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { MOTION_DYNAMIC } from '../body.js';
+import { MOTION_DYNAMIC, recordForce, recordV } from '../body.js';
 import type { Body } from '../body.js';
 import { angularVelocityFromMomentum } from '../inertia-world.js';
 import { STEP_ANGULAR_SCALE, STEP_H, STEP_LINEAR_SCALE } from './step-constants.js';
@@ -33,17 +33,21 @@ export function integrateVelocities(
   tmp: Float64Array,
 ): void {
   const { n, k } = D;
+  const vAt = recordV(D);
+  const forceAt = recordForce(D);
   const h = constants[STEP_H]!;
   const linearScale = constants[STEP_LINEAR_SCALE]!;
   const angularScale = constants[STEP_ANGULAR_SCALE]!;
   for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
     if (body.motion !== MOTION_DYNAMIC || body.sleeping) continue;
-    const v = body.v;
-    const f = body.force;
+    // v and the force through the record (a body makes its views only when asked for them)
+    const s = body.storage;
+    const v = body.storageOffset + vAt;
+    const f = body.storageOffset + forceAt;
     const im = body.invMass;
-    for (let i = 0; i < n; i += 1) v[i] = v[i]! + h * (f[i]! * im + gravity[i]!);
-    if (linearScale !== 1) for (let i = 0; i < n; i += 1) v[i] = v[i]! * linearScale;
+    for (let i = 0; i < n; i += 1) s[v + i] = s[v + i]! + h * (s[f + i]! * im + gravity[i]!);
+    if (linearScale !== 1) for (let i = 0; i < n; i += 1) s[v + i] = s[v + i]! * linearScale;
     if (!body.hasTorque && angularScale === 1) continue;
     const L = body.L;
     if (body.hasTorque) {

@@ -26,11 +26,6 @@ export class TreeBuilder {
   private bounds: Float64Array;
   /** The inner nodes made, parents before children (their boxes are filled in reverse). */
   private inner = new Int32Array(64);
-  /**
-   * The leaves' centres (doubled: min + max, n numbers per leaf), in the order of `leaves` and
-   * reordered with it: the partition reads them in sequence instead of through the leaf index.
-   */
-  private centres = new Float64Array(64);
 
   /** Scratch for n dimensions. */
   constructor(n: number) {
@@ -49,16 +44,10 @@ export class TreeBuilder {
     const n = this.n;
     const lo = tree.nodeMin;
     const hi = tree.nodeMax;
-    if (this.centres.length < count * n) this.centres = new Float64Array(Math.max(count * n, 2 * this.centres.length));
-    const centres = this.centres;
-    for (let i = 0; i < count; i += 1) {
-      const b = leaves[i]! * n;
-      for (let k = 0; k < n; k += 1) centres[i * n + k] = lo[b + k]! + hi[b + k]!;
-    }
     let innerCount = 0;
     let root = NULL;
     let top = this.push(0, 0, count, NULL, 0);
-    this.centreBounds(0, count, 0);
+    this.centreBounds(tree, leaves, 0, count, 0);
     while (top > 0) {
       top -= 1;
       const begin = this.stack[4 * top]!;
@@ -73,7 +62,7 @@ export class TreeBuilder {
         this.inner[innerCount++] = node;
         // Entry `top` is free now: the partition writes the first half's bounds there and the
         // second half's into the entry above it, and both are pushed in those places.
-        const mid = this.partition(leaves, begin, end, top);
+        const mid = this.partition(tree, leaves, begin, end, top);
         this.setEntry(top + 1, mid, end, node, 2);
         this.setEntry(top, begin, mid, node, 1);
         top += 2;
@@ -122,22 +111,23 @@ export class TreeBuilder {
   }
 
   /** The bounds of the centres of leaves[begin .. end) into bounds entry `at`. */
-  private centreBounds(begin: number, end: number, at: number): void {
+  private centreBounds(tree: DynamicAabbTree, leaves: Int32Array, begin: number, end: number, at: number): void {
     const n = this.n;
-    const centres = this.centres;
+    const lo = tree.nodeMin;
+    const hi = tree.nodeMax;
     const bounds = this.bounds;
     const o = 2 * n * at;
-    // One pass per axis with the bounds in locals (a store per leaf and axis cost more).
     for (let k = 0; k < n; k += 1) {
-      let low = Infinity;
-      let high = -Infinity;
-      for (let i = begin * n + k; i < end * n; i += n) {
-        const c = centres[i]!;
-        if (c < low) low = c;
-        if (c > high) high = c;
+      bounds[o + k] = Infinity;
+      bounds[o + n + k] = -Infinity;
+    }
+    for (let i = begin; i < end; i += 1) {
+      const b = leaves[i]! * n;
+      for (let k = 0; k < n; k += 1) {
+        const c = lo[b + k]! + hi[b + k]!;
+        if (c < bounds[o + k]!) bounds[o + k] = c;
+        if (c > bounds[o + n + k]!) bounds[o + n + k] = c;
       }
-      bounds[o + k] = low;
-      bounds[o + n + k] = high;
     }
   }
 
@@ -146,9 +136,10 @@ export class TreeBuilder {
    * non-empty runs, those below the middle of the widest axis first, and returns where the second
    * starts; the bounds of the first run's centres go to entry `at`, the second's to `at + 1`.
    */
-  private partition(leaves: Int32Array, begin: number, end: number, at: number): number {
+  private partition(tree: DynamicAabbTree, leaves: Int32Array, begin: number, end: number, at: number): number {
     const n = this.n;
-    const centres = this.centres;
+    const lo = tree.nodeMin;
+    const hi = tree.nodeMax;
     this.setEntry(at + 1, 0, 0, NULL, 0); // (room for the second run's bounds)
     const bounds = this.bounds;
     const o = 2 * n * at;
@@ -168,25 +159,20 @@ export class TreeBuilder {
     let i = begin;
     let j = end - 1;
     for (;;) {
-      while (i <= j && centres[i * n + axis]! < pivot) i += 1;
-      while (i <= j && centres[j * n + axis]! >= pivot) j -= 1;
+      while (i <= j && lo[leaves[i]! * n + axis]! + hi[leaves[i]! * n + axis]! < pivot) i += 1;
+      while (i <= j && lo[leaves[j]! * n + axis]! + hi[leaves[j]! * n + axis]! >= pivot) j -= 1;
       if (i >= j) break;
       const t = leaves[i]!;
       leaves[i] = leaves[j]!;
       leaves[j] = t;
-      for (let k = 0; k < n; k += 1) {
-        const c = centres[i * n + k]!;
-        centres[i * n + k] = centres[j * n + k]!;
-        centres[j * n + k] = c;
-      }
       i += 1;
       j -= 1;
     }
     // The lowest centre is below the pivot and the highest is not, unless the two are neighbouring
     // floats (then the pivot rounds onto the lowest): halve the range by count.
     if (i === begin || i === end) i = begin + ((end - begin) >> 1);
-    this.centreBounds(begin, i, at);
-    this.centreBounds(i, end, at + 1);
+    this.centreBounds(tree, leaves, begin, i, at);
+    this.centreBounds(tree, leaves, i, end, at + 1);
     return i;
   }
 }

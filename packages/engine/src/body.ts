@@ -141,31 +141,6 @@ function checkSensorFlag(fn: string, label: string, value: unknown): boolean {
   return value;
 }
 
-/**
- * @internal Where the fields of a body record start (see `Body.storage`): x at 0, R at n, then v,
- * L, w, force, torque. The step reads the record through these rather than the views, which a
- * body makes only when asked for.
- */
-export function recordV(D: Dims): number {
-  return D.n + D.r;
-}
-/** @internal Where L starts in a body record (see {@link recordV}). */
-export function recordL(D: Dims): number {
-  return 2 * D.n + D.r;
-}
-/** @internal Where w starts in a body record (see {@link recordV}). */
-export function recordW(D: Dims): number {
-  return 2 * D.n + D.r + D.k;
-}
-/** @internal Where the force starts in a body record (see {@link recordV}). */
-export function recordForce(D: Dims): number {
-  return 2 * D.n + D.r + 2 * D.k;
-}
-/** @internal Where the torque starts in a body record (see {@link recordV}). */
-export function recordTorque(D: Dims): number {
-  return 3 * D.n + D.r + 2 * D.k;
-}
-
 let nextBodyId = 1;
 
 /**
@@ -491,15 +466,12 @@ export class Body {
   /** @internal Largest distance of a shape point from the centre of mass (m); 0 for a half-space. */
   boundingRadius = 0;
 
-  // The views of the record, each made when first asked for: a view is a heap object, and a world
-  // of 32,000 bodies that the step moves through `storage` alone never needs most of them.
-  private xView: Float64Array | null = null;
-  private rView: Float64Array | null = null;
-  private vView: Float64Array | null = null;
-  private lView: Float64Array | null = null;
-  private wView: Float64Array | null = null;
-  private fView: Float64Array | null = null;
-  private tView: Float64Array | null = null;
+  /**
+   * The views of the record (x, R, v, L, w, force, torque), made together when one is first
+   * asked for: a view is a heap object, and the step reads the record through `storage`, so the
+   * 32,000 balls of a world built and stepped untouched never need theirs.
+   */
+  private views: Float64Array[] | null = null;
 
   /**
    * Builds a body. Every option is checked before anything is built (TypeError for a wrong type or
@@ -670,20 +642,11 @@ export class Body {
     // The record is written through `block` (no view made): a ball or box placed by position alone
     // gets no view at all until something reads one.
     const K = D.kernels;
-    if (options.rotor !== undefined || frameRotor !== undefined) {
+    block[start + n] = 1;
+    if (options.rotor !== undefined) {
       const R = this.R;
-      if (options.rotor !== undefined) {
-        R.set(options.rotor);
-        if (K.defect(R) > 0) K.correct(R, R);
-      } else {
-        R[0] = 1;
-      }
-      if (frameRotor !== undefined) {
-        K.mul(R, R, Float64Array.from(frameRotor));
-        if (K.defect(R) > 0) K.correct(R, R);
-      }
-    } else {
-      block[start + n] = 1;
+      R.set(options.rotor);
+      if (K.defect(R) > 0) K.correct(R, R);
     }
     let comOffset: Float64Array | null = null;
     if (frameOffset !== undefined && !isZero(frameOffset)) {
@@ -694,15 +657,15 @@ export class Body {
       else comOffset.set(frameOffset);
     }
     this.comOffset = comOffset;
-    const position = options.position;
-    if (position !== undefined) for (let i = 0; i < n; i += 1) block[start + i] = position[i]!;
+    if (frameRotor !== undefined) {
+      const R = this.R;
+      K.mul(R, R, Float64Array.from(frameRotor));
+      if (K.defect(R) > 0) K.correct(R, R);
+    }
+    if (options.position !== undefined) block.set(options.position, start);
     this.placeCentreOfMass();
     this.boundingRadius = shapeBoundingRadius(D.n, shape);
-    const velocity = options.velocity;
-    if (velocity !== undefined) {
-      const at = start + recordV(D);
-      for (let i = 0; i < n; i += 1) block[at + i] = velocity[i]!;
-    }
+    if (options.velocity !== undefined) block.set(options.velocity, start + n + D.r); // (v: after x and R)
     if (options.angularVelocity !== undefined) {
       this.w.set(options.angularVelocity);
       this.momentumFromOmega();
@@ -731,31 +694,31 @@ export class Body {
 
   /** Position of the centre of mass (m, n numbers). */
   get x(): Float64Array {
-    return this.xView ?? (this.xView = this.cut(0, this.D.n));
+    return (this.views ??= this.bindViews())[0]!;
   }
   /** Orientation rotor (r numbers). */
   get R(): Float64Array {
-    return this.rView ?? (this.rView = this.cut(this.D.n, this.D.r));
+    return (this.views ??= this.bindViews())[1]!;
   }
   /** Linear velocity (m/s, n numbers). */
   get v(): Float64Array {
-    return this.vView ?? (this.vView = this.cut(recordV(this.D), this.D.n));
+    return (this.views ??= this.bindViews())[2]!;
   }
   /** Angular momentum about the centre of mass, world frame (kg·m²/s, k numbers). */
   get L(): Float64Array {
-    return this.lView ?? (this.lView = this.cut(recordL(this.D), this.D.k));
+    return (this.views ??= this.bindViews())[3]!;
   }
   /** Angular velocity, world frame (rad/s, k numbers): I_world⁻¹ L. */
   get w(): Float64Array {
-    return this.wView ?? (this.wView = this.cut(recordW(this.D), this.D.k));
+    return (this.views ??= this.bindViews())[4]!;
   }
   /** Force accumulated since the last step (N, n numbers). */
   get force(): Float64Array {
-    return this.fView ?? (this.fView = this.cut(recordForce(this.D), this.D.n));
+    return (this.views ??= this.bindViews())[5]!;
   }
   /** Torque accumulated since the last step (N·m, bivector, k numbers). */
   get torque(): Float64Array {
-    return this.tView ?? (this.tView = this.cut(recordTorque(this.D), this.D.k));
+    return (this.views ??= this.bindViews())[6]!;
   }
 
   /** A short description for messages: `body 7 ('crate')`. */
@@ -825,19 +788,6 @@ export class Body {
   }
 
   /**
-   * @internal Moves the record to `storage` at `offset` (copying the current values) and rebinds
-   * the views; for a world that packs its bodies into flat arrays.
-   */
-  bindStorage(storage: Float64Array, offset: number): void {
-    const len = Body.recordLength(this.D);
-    if (offset < 0 || offset + len > storage.length) throw new RangeError(`Body.bindStorage: record does not fit at ${offset}`);
-    storage.set(this.storage.subarray(this.storageOffset, this.storageOffset + len), offset);
-    this.storage = storage;
-    this.storageOffset = offset;
-    this.dropViews();
-  }
-
-  /**
    * @internal A view of x, R, v, L, w as one record (a new view per call: for tests and error
    * paths; the step reads `storage` at `storageOffset`).
    */
@@ -845,21 +795,17 @@ export class Body {
     return this.storage.subarray(this.storageOffset, this.storageOffset + Body.stateLength(this.D));
   }
 
-  /** A view of `len` numbers of the record at `at`, made straight on the buffer (subarray() looks up the species constructor). */
-  private cut(at: number, len: number): Float64Array {
+  /** The views of x, R, v, L, w, force and torque, made straight on the buffer (subarray() looks up the species constructor). */
+  private bindViews(): Float64Array[] {
+    const { n, r, k } = this.D;
     const s = this.storage;
-    return new Float64Array(s.buffer, s.byteOffset + (this.storageOffset + at) * 8, len);
-  }
-
-  /** Forgets the views (made again on the current storage when asked for). */
-  private dropViews(): void {
-    this.xView = null;
-    this.rView = null;
-    this.vView = null;
-    this.lView = null;
-    this.wView = null;
-    this.fView = null;
-    this.tView = null;
+    let at = s.byteOffset + this.storageOffset * 8;
+    const views: Float64Array[] = [];
+    for (const len of [n, r, n, k, k, n, k]) {
+      views.push(new Float64Array(s.buffer, at, len));
+      at += len * 8;
+    }
+    return views;
   }
 
   /**
@@ -1300,10 +1246,8 @@ export class Body {
 
   /** @internal Clears the accumulated force and torque. */
   clearForces(): void {
-    const s = this.storage;
-    const n = this.D.n;
-    const at = this.storageOffset + recordForce(this.D);
-    for (let i = 0; i < n; i += 1) s[at + i] = 0;
+    const at = this.storageOffset + 2 * this.D.n + this.D.r + 2 * this.D.k; // (the force: after x, R, v, L, w)
+    this.storage.fill(0, at, at + this.D.n);
     if (this.hasTorque) {
       this.torque.fill(0);
       this.hasTorque = false;

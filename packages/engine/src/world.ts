@@ -5,7 +5,7 @@
  */
 import { checkInteger, checkNumber, checkVector, MAX_DIMENSION, MIN_DIMENSION } from '@physin/algebra';
 import type { Dims } from '@physin/algebra';
-import { Body, MOTION_DYNAMIC, MOTION_STATIC, recordV, recordW } from './body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC } from './body.js';
 import type { BodyOwner } from './body.js';
 import { computeBoundsUnchecked } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
@@ -132,8 +132,6 @@ interface WorldScratch {
   readonly normal: Float64Array;
   /** [0] |v| and [1] |ω| of the body the broadphase stage is on. */
   readonly speeds: Float64Array;
-  /** r numbers: a body's rotor copied from its record (the body's own view may not exist). */
-  readonly rotorCopy: Float64Array;
 }
 
 /**
@@ -386,7 +384,6 @@ export class WorldBase {
       max: new Float64Array(D.n),
       normal: new Float64Array(D.n),
       speeds: new Float64Array(2),
-      rotorCopy: new Float64Array(this.D.r),
     };
     this.constants = createStepConstants();
     const unit = params.lengthUnit;
@@ -907,7 +904,7 @@ export class WorldBase {
     const at = body.storageOffset;
     const n = px.length;
     for (let i = 0; i < n; i += 1) px[i] = s[at + i]!;
-    const R = this.scratch.rotorCopy;
+    const R = this.scratch.rotor.turn; // (scratch of the rotor step, free here: r numbers)
     for (let i = 0; i < R.length; i += 1) R[i] = s[at + n + i]!;
     this.D.kernels.toMatrix(pose.M, R);
     // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
@@ -1070,8 +1067,9 @@ export class WorldBase {
   private reachAndMove(body: Body): boolean {
     const speeds = this.scratch.speeds;
     const D = this.D;
-    robustNormInto(speeds, 0, body.storage, body.storageOffset + recordV(D), D.n);
-    robustNormInto(speeds, 1, body.storage, body.storageOffset + recordW(D), D.k);
+    const v = body.storageOffset + D.n + D.r; // v after x and R, then L (k numbers), then w
+    robustNormInto(speeds, 0, body.storage, v, D.n);
+    robustNormInto(speeds, 1, body.storage, v + D.n + D.k, D.k);
     const speed = speeds[0]!;
     const spin = speeds[1]!;
     if (!(speed < Infinity) || !(spin < Infinity)) return false;

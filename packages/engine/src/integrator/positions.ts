@@ -13,7 +13,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { MOTION_DYNAMIC, MOTION_STATIC, recordL, recordV, recordW } from '../body.js';
+import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import type { Body } from '../body.js';
 import { momentumFromAngularVelocity } from '../inertia-world.js';
 import { advanceRotor, advanceRotorKinematic } from './rotor-step.js';
@@ -42,9 +42,9 @@ export function integratePositions(
   scratch: RotorStepScratch,
 ): number {
   const { n, k } = D;
-  const vAt = recordV(D);
-  const lAt = recordL(D);
-  const wAt = recordW(D);
+  // where v, L and w start in a body record (see Body.storage: x, R, v, L, w, force, torque)
+  const vAt = n + D.r;
+  const lAt = vAt + n;
   const h = constants[STEP_H]!;
   for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
@@ -60,7 +60,7 @@ export function integratePositions(
       if (!isZeroRun(s, at + lAt, k)) {
         advanceRotor(D, body.R, body.w, body.L, body.invInertia, constants, scratch);
       }
-    } else if (!isZeroRun(s, at + wAt, k)) {
+    } else if (!isZeroRun(s, at + lAt + k, k)) {
       advanceRotorKinematic(D, body.R, body.w, constants, scratch);
       if (body.massValue > 0) momentumFromAngularVelocity(D, body.L, body.R, body.inertia, body.w, scratch.tmp);
     }

@@ -8,7 +8,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { MOTION_DYNAMIC, recordForce, recordV } from '../body.js';
+import { MOTION_DYNAMIC } from '../body.js';
 import type { Body } from '../body.js';
 import { angularVelocityFromMomentum } from '../inertia-world.js';
 import { STEP_ANGULAR_SCALE, STEP_H, STEP_LINEAR_SCALE } from './step-constants.js';
@@ -33,8 +33,9 @@ export function integrateVelocities(
   tmp: Float64Array,
 ): void {
   const { n, k } = D;
-  const vAt = recordV(D);
-  const forceAt = recordForce(D);
+  // where v and the force start in a body record (see Body.storage: x, R, v, L, w, force, torque)
+  const vAt = n + D.r;
+  const forceAt = vAt + n + 2 * k;
   const h = constants[STEP_H]!;
   const linearScale = constants[STEP_LINEAR_SCALE]!;
   const angularScale = constants[STEP_ANGULAR_SCALE]!;

@@ -20,7 +20,7 @@
  * @module
  */
 import type { Body } from '../body.js';
-import { MOTION_DYNAMIC, MOTION_STATIC, recordV, recordW } from '../body.js';
+import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
 import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
@@ -278,22 +278,17 @@ export class Islands {
     this.reserve(count);
     const lin2 = linear * linear;
     const ang2 = angular * angular;
-    const D = count > 0 ? bodies[0].D : null;
-    const n = D === null ? 0 : D.n;
-    const k = D === null ? 0 : D.k;
-    const vAt = D === null ? 0 : recordV(D);
-    const wAt = D === null ? 0 : recordW(D);
     for (let i = 0; i < count; i += 1) {
       const body = bodies[i];
       if (body.motion !== MOTION_DYNAMIC) continue;
       // v and ω through the record (a body makes its views only when asked for them)
+      const { n, r, k } = body.D;
       const s = body.storage;
-      const v = body.storageOffset + vAt;
-      const w = body.storageOffset + wAt;
+      const v = body.storageOffset + n + r; // v after x and R, then L, then w
       let v2 = 0;
-      for (let d = 0; d < n; d += 1) v2 += s[v + d] * s[v + d];
+      for (let i = v; i < v + n; i += 1) v2 += s[i] * s[i];
       let w2 = 0;
-      for (let p = 0; p < k; p += 1) w2 += s[w + p] * s[w + p];
+      for (let i = v + n + k; i < v + n + 2 * k; i += 1) w2 += s[i] * s[i];
       body.sleepTimer = v2 > lin2 || w2 > ang2 ? 0 : body.sleepTimer + h;
     }
     this.build(awake, contacts, joints, true);

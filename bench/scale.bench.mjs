@@ -9,9 +9,10 @@
 // then `removeRigidBody`. Rapier defers its broadphase work to the step, so each phase is followed
 // by one step and the step is timed with it: "add" is add + step, "remove" is remove + step.
 //
-// Timing: performance.now() around each phase; ROUNDS rounds (default 5), PhysiN and Rapier
-// alternating within each round so that the drift of a shared machine falls on both; the cells are
-// medians over the rounds. The target of issue 19 is ≤ 0.2 s for add and remove together.
+// Timing: performance.now() around each phase, and the process's CPU time (process.cpuUsage, user +
+// system: less sensitive than the wall clock to other jobs on a shared machine) around the whole
+// round; ROUNDS rounds (default 5), PhysiN and Rapier alternating within each round so that the
+// drift of a shared machine falls on both; the cells are medians over the rounds. The target of issue 19 is ≤ 0.2 s for add and remove together.
 //
 // Options (environment): SCALE_BODIES (default 32000), SCALE_ROUNDS (default 5).
 //
@@ -36,6 +37,12 @@ const RADIUS = 0.2;
 const SPACING = 1;
 const DT = 1 / 60;
 
+/** The process's CPU time so far (ms, user + system). */
+function cpuMs() {
+  const u = process.cpuUsage();
+  return (u.user + u.system) / 1000;
+}
+
 /** Position of ball i on the 40 × 40 × k grid. */
 function place(i, out) {
   out[0] = (i % 40) * SPACING;
@@ -51,6 +58,7 @@ function physinRound() {
   const shape = HyperSphere(D, RADIUS);
   const bodies = new Array(BODIES);
   const p = [0, 0, 0];
+  const c0 = cpuMs();
   const t0 = performance.now();
   for (let i = 0; i < BODIES; i += 1) bodies[i] = world.addBody(new Body(D, { shape, mass: 1, position: place(i, p) }));
   world.step(DT);
@@ -58,8 +66,9 @@ function physinRound() {
   for (let i = 0; i < BODIES; i += 1) world.removeBody(bodies[i]);
   world.step(DT);
   const t2 = performance.now();
+  const c2 = cpuMs();
   if (world.bodies.length !== 0) throw new Error(`PhysiN: ${world.bodies.length} bodies left after removal`);
-  return { add: t1 - t0, remove: t2 - t1 };
+  return { add: t1 - t0, remove: t2 - t1, cpu: c2 - c0 };
 }
 
 function rapierRound() {
@@ -67,6 +76,7 @@ function rapierRound() {
   world.timestep = DT;
   const bodies = new Array(BODIES);
   const p = [0, 0, 0];
+  const c0 = cpuMs();
   const t0 = performance.now();
   for (let i = 0; i < BODIES; i += 1) {
     place(i, p);
@@ -79,9 +89,10 @@ function rapierRound() {
   for (let i = 0; i < BODIES; i += 1) world.removeRigidBody(bodies[i]);
   world.step();
   const t2 = performance.now();
+  const c2 = cpuMs();
   if (world.bodies.len() !== 0) throw new Error(`Rapier: ${world.bodies.len()} bodies left after removal`);
   world.free();
-  return { add: t1 - t0, remove: t2 - t1 };
+  return { add: t1 - t0, remove: t2 - t1, cpu: c2 - c0 };
 }
 
 const median = (xs) => {
@@ -93,13 +104,14 @@ const median = (xs) => {
 // One untimed round each: the JIT warm-up.
 physinRound();
 rapierRound();
-const results = { PhysiN: { add: [], remove: [] }, Rapier: { add: [], remove: [] } };
+const results = { PhysiN: { add: [], remove: [], cpu: [] }, Rapier: { add: [], remove: [], cpu: [] } };
 for (let r = 0; r < ROUNDS; r += 1) {
   const order = r % 2 === 0 ? ['PhysiN', 'Rapier'] : ['Rapier', 'PhysiN'];
   for (const name of order) {
     const t = name === 'PhysiN' ? physinRound() : rapierRound();
     results[name].add.push(t.add);
     results[name].remove.push(t.remove);
+    results[name].cpu.push(t.cpu);
   }
 }
 
@@ -113,6 +125,7 @@ const rows = ['PhysiN', 'Rapier'].map((name) => {
     'add + step (ms)': add,
     'remove + step (ms)': remove,
     'total (ms)': add + remove,
+    'CPU total (ms)': median(results[name].cpu),
   };
 });
 medianTable(`Add ${BODIES} balls, step, remove them all, step: ms, median of ${ROUNDS} rounds (engines alternating)`, rows);

@@ -319,7 +319,7 @@ function wedgeSumFinite(D: Dims, out: Float64Array, base: Float64Array, a: Array
 /**
  * A rigid body in n dimensions.
  *
- * **State** (SI units, world frame), all `Float64Array` views into one buffer the body owns:
+ * **State** (SI units, world frame), all `Float64Array` views of the body's record (each made when first read):
  * - `x` (n): position of the centre of mass (m);
  * - `R` (r = 2^(n−1)): orientation rotor; a body point at ξ in the body frame is at x + R ξ R~;
  * - `v` (n): linear velocity of the centre of mass (m/s);
@@ -466,14 +466,12 @@ export class Body {
   /** @internal Largest distance of a shape point from the centre of mass (m); 0 for a half-space. */
   boundingRadius = 0;
 
-  private xView!: Float64Array;
-  private rView!: Float64Array;
-  private vView!: Float64Array;
-  private lView!: Float64Array;
-  private wView!: Float64Array;
-  private fView!: Float64Array;
-  /** Made when first asked for (a torque is rare: most bodies never need the view). */
-  private tView: Float64Array | null = null;
+  /**
+   * The views of the record (x, R, v, L, w, force, torque), made together when one is first
+   * asked for: a view is a heap object, and the step reads the record through `storage`, so the
+   * 32,000 balls of a world built and stepped untouched never need theirs.
+   */
+  private views: Float64Array[] | null = null;
 
   /**
    * Builds a body. Every option is checked before anything is built (TypeError for a wrong type or
@@ -640,15 +638,15 @@ export class Body {
     if (!shares) this.fillInverseInertia();
     this.storage = block;
     this.storageOffset = start;
-    this.bindViews();
 
+    // The record is written through `block` (no view made): a ball or box placed by position alone
+    // gets no view at all until something reads one.
     const K = D.kernels;
-    const R = this.rView;
+    block[start + n] = 1;
     if (options.rotor !== undefined) {
+      const R = this.R;
       R.set(options.rotor);
       if (K.defect(R) > 0) K.correct(R, R);
-    } else {
-      R[0] = 1;
     }
     let comOffset: Float64Array | null = null;
     if (frameOffset !== undefined && !isZero(frameOffset)) {
@@ -660,15 +658,16 @@ export class Body {
     }
     this.comOffset = comOffset;
     if (frameRotor !== undefined) {
+      const R = this.R;
       K.mul(R, R, Float64Array.from(frameRotor));
       if (K.defect(R) > 0) K.correct(R, R);
     }
-    if (options.position !== undefined) this.xView.set(options.position);
+    if (options.position !== undefined) block.set(options.position, start);
     this.placeCentreOfMass();
     this.boundingRadius = shapeBoundingRadius(D.n, shape);
-    if (options.velocity !== undefined) this.vView.set(options.velocity);
+    if (options.velocity !== undefined) block.set(options.velocity, start + n + D.r); // (v: after x and R)
     if (options.angularVelocity !== undefined) {
-      this.wView.set(options.angularVelocity);
+      this.w.set(options.angularVelocity);
       this.momentumFromOmega();
     }
   }
@@ -695,31 +694,31 @@ export class Body {
 
   /** Position of the centre of mass (m, n numbers). */
   get x(): Float64Array {
-    return this.xView;
+    return (this.views ??= this.bindViews())[0]!;
   }
   /** Orientation rotor (r numbers). */
   get R(): Float64Array {
-    return this.rView;
+    return (this.views ??= this.bindViews())[1]!;
   }
   /** Linear velocity (m/s, n numbers). */
   get v(): Float64Array {
-    return this.vView;
+    return (this.views ??= this.bindViews())[2]!;
   }
   /** Angular momentum about the centre of mass, world frame (kg·m²/s, k numbers). */
   get L(): Float64Array {
-    return this.lView;
+    return (this.views ??= this.bindViews())[3]!;
   }
   /** Angular velocity, world frame (rad/s, k numbers): I_world⁻¹ L. */
   get w(): Float64Array {
-    return this.wView;
+    return (this.views ??= this.bindViews())[4]!;
   }
   /** Force accumulated since the last step (N, n numbers). */
   get force(): Float64Array {
-    return this.fView;
+    return (this.views ??= this.bindViews())[5]!;
   }
   /** Torque accumulated since the last step (N·m, bivector, k numbers). */
   get torque(): Float64Array {
-    return this.tView ?? this.bindTorque();
+    return (this.views ??= this.bindViews())[6]!;
   }
 
   /** A short description for messages: `body 7 ('crate')`. */
@@ -789,19 +788,6 @@ export class Body {
   }
 
   /**
-   * @internal Moves the record to `storage` at `offset` (copying the current values) and rebinds
-   * the views; for a world that packs its bodies into flat arrays.
-   */
-  bindStorage(storage: Float64Array, offset: number): void {
-    const len = Body.recordLength(this.D);
-    if (offset < 0 || offset + len > storage.length) throw new RangeError(`Body.bindStorage: record does not fit at ${offset}`);
-    storage.set(this.storage.subarray(this.storageOffset, this.storageOffset + len), offset);
-    this.storage = storage;
-    this.storageOffset = offset;
-    this.bindViews();
-  }
-
-  /**
    * @internal A view of x, R, v, L, w as one record (a new view per call: for tests and error
    * paths; the step reads `storage` at `storageOffset`).
    */
@@ -809,33 +795,17 @@ export class Body {
     return this.storage.subarray(this.storageOffset, this.storageOffset + Body.stateLength(this.D));
   }
 
-  private bindViews(): void {
+  /** The views of x, R, v, L, w, force and torque, made straight on the buffer (subarray() looks up the species constructor). */
+  private bindViews(): Float64Array[] {
     const { n, r, k } = this.D;
     const s = this.storage;
-    const buffer = s.buffer;
-    // Views made straight on the buffer: subarray() looks up the species constructor each time.
     let at = s.byteOffset + this.storageOffset * 8;
-    this.xView = new Float64Array(buffer, at, n);
-    at += n * 8;
-    this.rView = new Float64Array(buffer, at, r);
-    at += r * 8;
-    this.vView = new Float64Array(buffer, at, n);
-    at += n * 8;
-    this.lView = new Float64Array(buffer, at, k);
-    at += k * 8;
-    this.wView = new Float64Array(buffer, at, k);
-    at += k * 8;
-    this.fView = new Float64Array(buffer, at, n);
-    this.tView = null; // (made again on the new storage when asked for)
-  }
-
-  /** Makes the torque view (after force in the record) and returns it. */
-  private bindTorque(): Float64Array {
-    const s = this.storage;
-    const at = s.byteOffset + (this.storageOffset + Body.stateLength(this.D) + this.D.n) * 8;
-    const view = new Float64Array(s.buffer, at, this.D.k);
-    this.tView = view;
-    return view;
+    const views: Float64Array[] = [];
+    for (const len of [n, r, n, k, k, n, k]) {
+      views.push(new Float64Array(s.buffer, at, len));
+      at += len * 8;
+    }
+    return views;
   }
 
   /**
@@ -866,16 +836,16 @@ export class Body {
   /** L = I_world ω from the current w (massless: L = 0). */
   private momentumFromOmega(): void {
     if (this.massValue > 0) {
-      momentumFromAngularVelocity(this.D, this.lView, this.rView, this.inertia, this.wView, scratchFor(this.D).tmp);
+      momentumFromAngularVelocity(this.D, this.L, this.R, this.inertia, this.w, scratchFor(this.D).tmp);
     } else {
-      this.lView.fill(0);
+      this.L.fill(0);
     }
   }
 
   /** @internal ω = I_world⁻¹ L for a dynamic body (call after any change of L or R). */
   omegaFromMomentum(): void {
     if (this.motion === MOTION_DYNAMIC) {
-      angularVelocityFromMomentum(this.D, this.wView, this.rView, this.invInertia, this.lView, scratchFor(this.D).tmp);
+      angularVelocityFromMomentum(this.D, this.w, this.R, this.invInertia, this.L, scratchFor(this.D).tmp);
     }
   }
 
@@ -884,8 +854,8 @@ export class Body {
     const off = this.comOffset;
     if (off === null) return;
     const c = scratchFor(this.D).vector;
-    this.D.kernels.applyVector(c, this.rView, off);
-    for (let i = 0; i < this.D.n; i += 1) this.xView[i] = this.xView[i]! + c[i]!;
+    this.D.kernels.applyVector(c, this.R, off);
+    for (let i = 0; i < this.D.n; i += 1) this.x[i] = this.x[i]! + c[i]!;
   }
 
   /**
@@ -895,9 +865,9 @@ export class Body {
   kineticEnergy(): number {
     if (this.massValue === 0) return 0;
     let lin = 0;
-    for (let i = 0; i < this.D.n; i += 1) lin += this.vView[i]! * this.vView[i]!;
+    for (let i = 0; i < this.D.n; i += 1) lin += this.v[i]! * this.v[i]!;
     let ang = 0;
-    for (let p = 0; p < this.D.k; p += 1) ang += this.lView[p]! * this.wView[p]!;
+    for (let p = 0; p < this.D.k; p += 1) ang += this.L[p]! * this.w[p]!;
     return 0.5 * (this.massValue * lin + ang);
   }
 
@@ -910,11 +880,11 @@ export class Body {
     if (!(out instanceof Float64Array) || out.length !== n) {
       throw new TypeError(`Body.getPositionN: argument 'out' must be a Float64Array of length ${n}`);
     }
-    out.set(this.xView);
+    out.set(this.x);
     const off = this.comOffset;
     if (off !== null) {
       const c = scratchFor(this.D).vector;
-      this.D.kernels.applyVector(c, this.rView, off);
+      this.D.kernels.applyVector(c, this.R, off);
       for (let i = 0; i < n; i += 1) out[i] = out[i]! - c[i]!;
     }
     return out;
@@ -928,7 +898,7 @@ export class Body {
   setPositionN(p: ArrayLike<number>): this {
     checkVector(this.D, 'p', p, 'Body.setPositionN');
     checkComponents('Body.setPositionN', "argument 'p'", p, inputLimits.maxPosition, 'm');
-    this.xView.set(p);
+    this.x.set(p);
     this.placeCentreOfMass();
     this.movedByHand();
     return this;
@@ -944,9 +914,9 @@ export class Body {
     checkPlane(this.D, 'i', i, 'j', j, fn);
     checkNumber('angle', angle, fn);
     const origin = this.comOffset === null ? null : this.getPositionN();
-    rotorRotateInPlane(this.D, this.rView, this.rView, i, j, angle);
+    rotorRotateInPlane(this.D, this.R, this.R, i, j, angle);
     if (origin !== null) {
-      this.xView.set(origin);
+      this.x.set(origin);
       this.placeCentreOfMass();
     }
     if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
@@ -962,7 +932,7 @@ export class Body {
     if (this.motion === MOTION_STATIC && !isZero(v)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot move (argument 'v' must be zero)`);
     }
-    this.vView.set(v);
+    this.v.set(v);
     this.wake();
     return this;
   }
@@ -978,7 +948,7 @@ export class Body {
     if (this.motion === MOTION_STATIC && !isZero(w)) {
       throw new RangeError(`${fn}: ${this.label} is static and cannot turn (argument 'w' must be zero)`);
     }
-    this.wView.set(w);
+    this.w.set(w);
     this.momentumFromOmega();
     this.wake();
     return this;
@@ -994,8 +964,8 @@ export class Body {
     checkComponents(fn, "argument 'j'", j, inputLimits.maxImpulse, 'N·s');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
-    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.v, j, im, inputLimits.maxVelocity, 'm/s');
+    for (let i = 0; i < this.D.n; i += 1) this.v[i] = this.v[i]! + j[i]! * im;
     this.wake();
     return this;
   }
@@ -1013,14 +983,14 @@ export class Body {
     checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
     const im = this.invMass;
-    checkSumBounded(fn, 'j', this.label, 'velocity', this.vView, j, im, inputLimits.maxVelocity, 'm/s');
+    checkSumBounded(fn, 'j', this.label, 'velocity', this.v, j, im, inputLimits.maxVelocity, 'm/s');
     // the new L and its ω first, into scratch: committed only if both are finite
     const scratch = scratchFor(this.D);
     const L = scratch.bivector;
     const w = scratch.omega;
-    let finite = wedgeSumFinite(this.D, L, this.lView, r, j);
+    let finite = wedgeSumFinite(this.D, L, this.L, r, j);
     if (finite) {
-      angularVelocityFromMomentum(this.D, w, this.rView, this.invInertia, L, scratch.tmp);
+      angularVelocityFromMomentum(this.D, w, this.R, this.invInertia, L, scratch.tmp);
       for (let p = 0; p < this.D.k; p += 1) if (!Number.isFinite(w[p]!)) finite = false;
     }
     if (!finite)
@@ -1030,15 +1000,15 @@ export class Body {
     const maxW = inputLimits.maxAngularVelocity;
     for (let p = 0; p < this.D.k; p += 1) {
       const a = Math.abs(w[p]!);
-      if (!(a <= maxW || a <= Math.abs(this.wView[p]!))) {
+      if (!(a <= maxW || a <= Math.abs(this.w[p]!))) {
         throw new RangeError(
           `${fn}: arguments 'j' and 'r' would make ${this.label}'s angular velocity[${p}] ${w[p]}, beyond ±${formatBound(maxW)} rad/s (Body.limits); nothing was changed`,
         );
       }
     }
-    for (let i = 0; i < this.D.n; i += 1) this.vView[i] = this.vView[i]! + j[i]! * im;
-    this.lView.set(L);
-    this.wView.set(w);
+    for (let i = 0; i < this.D.n; i += 1) this.v[i] = this.v[i]! + j[i]! * im;
+    this.L.set(L);
+    this.w.set(w);
     this.wake();
     return this;
   }
@@ -1049,9 +1019,9 @@ export class Body {
     checkVector(this.D, 'f', f, fn);
     checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
-    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
-    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    checkSumBounded(fn, 'f', this.label, 'force', this.force, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.force, f, this.invMass);
+    for (let i = 0; i < this.D.n; i += 1) this.force[i] = this.force[i]! + f[i]!;
     this.wake();
     return this;
   }
@@ -1067,8 +1037,8 @@ export class Body {
     checkComponents(fn, "argument 'f'", f, inputLimits.maxForce, 'N');
     checkComponents(fn, "argument 'r'", r, inputLimits.maxPosition, 'm');
     if (this.motion !== MOTION_DYNAMIC) return this;
-    checkSumBounded(fn, 'f', this.label, 'force', this.fView, f, 1, inputLimits.maxForce, 'N');
-    checkAcceleration(fn, 'f', this.label, this.fView, f, this.invMass);
+    checkSumBounded(fn, 'f', this.label, 'force', this.force, f, 1, inputLimits.maxForce, 'N');
+    checkAcceleration(fn, 'f', this.label, this.force, f, this.invMass);
     const torque = scratchFor(this.D).bivector;
     if (!wedgeSumFinite(this.D, torque, this.torque, r, f)) {
       throw new RangeError(`${fn}: arguments 'f' and 'r' would make ${this.label}'s torque non-finite; nothing was changed`);
@@ -1083,7 +1053,7 @@ export class Body {
       }
     }
     this.checkAngularAcceleration(fn, "arguments 'f' and 'r'", torque);
-    for (let i = 0; i < this.D.n; i += 1) this.fView[i] = this.fView[i]! + f[i]!;
+    for (let i = 0; i < this.D.n; i += 1) this.force[i] = this.force[i]! + f[i]!;
     this.torque.set(torque);
     this.hasTorque = true;
     this.wake();
@@ -1117,12 +1087,12 @@ export class Body {
     }
     const frame = this.shape.frameRotor;
     if (frame === undefined) {
-      out.set(this.rView);
+      out.set(this.R);
       return out;
     }
     const inv = scratchFor(this.D).rotor;
     rotorReverse(this.D, inv, frame);
-    this.D.kernels.mul(out, this.rView, inv);
+    this.D.kernels.mul(out, this.R, inv);
     return out;
   }
 
@@ -1145,11 +1115,11 @@ export class Body {
     }
     const origin = this.comOffset === null ? null : this.getPositionN(scratchFor(this.D).origin);
     const frame = this.shape.frameRotor;
-    if (frame !== undefined) K.mul(this.rView, next, frame);
-    else this.rView.set(next);
-    if (K.defect(this.rView) > 0) K.correct(this.rView, this.rView);
+    if (frame !== undefined) K.mul(this.R, next, frame);
+    else this.R.set(next);
+    if (K.defect(this.R) > 0) K.correct(this.R, this.R);
     if (origin !== null) {
-      this.xView.set(origin);
+      this.x.set(origin);
       this.placeCentreOfMass();
     }
     if (this.motion !== MOTION_STATIC) this.momentumFromOmega();
@@ -1219,9 +1189,9 @@ export class Body {
       this.ownInertia();
       this.inertia.fill(0);
       this.fillInverseInertia();
-      this.vView.fill(0);
-      this.lView.fill(0);
-      this.wView.fill(0);
+      this.v.fill(0);
+      this.L.fill(0);
+      this.w.fill(0);
       this.clearForces();
       this.sleeping = false;
       this.owner?.onBodyChanged(this);
@@ -1233,7 +1203,7 @@ export class Body {
     // L = I_world ω with the new inertia, into scratch: committed only if finite
     const scratch = scratchFor(this.D);
     const L = scratch.bivector;
-    momentumFromAngularVelocity(this.D, L, this.rView, mp.inertia, this.wView, scratch.tmp);
+    momentumFromAngularVelocity(this.D, L, this.R, mp.inertia, this.w, scratch.tmp);
     for (let p = 0; p < this.D.k; p += 1) {
       if (!Number.isFinite(L[p]!)) {
         throw new RangeError(
@@ -1247,7 +1217,7 @@ export class Body {
     this.ownInertia();
     this.inertia.set(mp.inertia);
     this.fillInverseInertia();
-    this.lView.set(L);
+    this.L.set(L);
     this.sleeping = false;
     this.sleepTimer = 0;
     this.owner?.onBodyChanged(this);
@@ -1261,11 +1231,11 @@ export class Body {
   private checkAngularAcceleration(fn: string, what: string, torque: Float64Array): void {
     const scratch = scratchFor(this.D);
     const max = inputLimits.maxAngularAcceleration;
-    angularVelocityFromMomentum(this.D, scratch.omega, this.rView, this.invInertia, torque, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.omega, this.R, this.invInertia, torque, scratch.tmp);
     let next = 0;
     for (let p = 0; p < this.D.k; p += 1) next = Math.max(next, Math.abs(scratch.omega[p]!));
     if (next <= max) return;
-    angularVelocityFromMomentum(this.D, scratch.alpha, this.rView, this.invInertia, this.torque, scratch.tmp);
+    angularVelocityFromMomentum(this.D, scratch.alpha, this.R, this.invInertia, this.torque, scratch.tmp);
     let now = 0;
     for (let p = 0; p < this.D.k; p += 1) now = Math.max(now, Math.abs(scratch.alpha[p]!));
     if (next <= now) return;
@@ -1276,7 +1246,8 @@ export class Body {
 
   /** @internal Clears the accumulated force and torque. */
   clearForces(): void {
-    this.fView.fill(0);
+    const at = this.storageOffset + 2 * this.D.n + this.D.r + 2 * this.D.k; // (the force: after x, R, v, L, w)
+    this.storage.fill(0, at, at + this.D.n);
     if (this.hasTorque) {
       this.torque.fill(0);
       this.hasTorque = false;

@@ -22,13 +22,8 @@ export class Float64Slab {
 
   /** A zeroed view of `len` numbers (len <= 4096), cut from the current block or a new one. */
   take(len: number): Float64Array {
-    if (this.used + len > this.block.length) {
-      this.block = new Float64Array(BLOCK_NUMBERS);
-      this.used = 0;
-    }
-    const view = new Float64Array(this.block.buffer, this.used * 8, len);
-    this.used += len;
-    return view;
+    const start = this.reserve(len);
+    return new Float64Array(this.block.buffer, start * 8, len);
   }
 
   /**

@@ -135,7 +135,7 @@ interface WorldScratch {
 }
 
 /**
- * The Euclidean norm of `a` into `out[slot]`, without overflow for huge finite entries (then
+ * The Euclidean norm of a[at .. at + len) into `out[slot]`, without overflow for huge finite entries (then
  * scaled by the largest); Infinity or NaN when an entry is not finite.
  *
  * Why an out-parameter: a double returned by a call V8 does not inline is boxed into a fresh heap
@@ -143,21 +143,22 @@ interface WorldScratch {
  * it cost two heap numbers per moving body per sub-step whenever it was not (the allocation test
  * caught it on a busy CI machine).
  */
-function robustNormInto(out: Float64Array, slot: number, a: Float64Array): void {
+function robustNormInto(out: Float64Array, slot: number, a: Float64Array, at: number, len: number): void {
+  const end = at + len;
   let s = 0;
-  for (let i = 0; i < a.length; i += 1) s += a[i]! * a[i]!;
+  for (let i = at; i < end; i += 1) s += a[i]! * a[i]!;
   if (s < Infinity) {
     out[slot] = Math.sqrt(s);
     return;
   }
   let big = 0;
-  for (let i = 0; i < a.length; i += 1) big = Math.max(big, Math.abs(a[i]!));
+  for (let i = at; i < end; i += 1) big = Math.max(big, Math.abs(a[i]!));
   if (!(big < Infinity)) {
     out[slot] = big;
     return;
   }
   s = 0;
-  for (let i = 0; i < a.length; i += 1) {
+  for (let i = at; i < end; i += 1) {
     const q = a[i]! / big;
     s += q * q;
   }
@@ -897,10 +898,15 @@ export class WorldBase {
   private updatePose(body: Body): void {
     const pose = body.pose!;
     // A loop, not pose.x.set(): a builtin call costs more than copying n numbers.
+    // Read from the record: the body's views are made only when something asks for them.
     const px = pose.x;
-    const x = body.x;
-    for (let i = 0; i < px.length; i += 1) px[i] = x[i]!;
-    this.D.kernels.toMatrix(pose.M, body.R);
+    const s = body.storage;
+    const at = body.storageOffset;
+    const n = px.length;
+    for (let i = 0; i < n; i += 1) px[i] = s[at + i]!;
+    const R = this.scratch.rotor.turn; // (scratch of the rotor step, free here: r numbers)
+    for (let i = 0; i < R.length; i += 1) R[i] = s[at + n + i]!;
+    this.D.kernels.toMatrix(pose.M, R);
     // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
     const id = body.proxyId;
     if (id < 0) return;
@@ -1060,8 +1066,10 @@ export class WorldBase {
    */
   private reachAndMove(body: Body): boolean {
     const speeds = this.scratch.speeds;
-    robustNormInto(speeds, 0, body.v);
-    robustNormInto(speeds, 1, body.w);
+    const D = this.D;
+    const v = body.storageOffset + D.n + D.r; // v after x and R, then L (k numbers), then w
+    robustNormInto(speeds, 0, body.storage, v, D.n);
+    robustNormInto(speeds, 1, body.storage, v + D.n + D.k, D.k);
     const speed = speeds[0]!;
     const spin = speeds[1]!;
     if (!(speed < Infinity) || !(spin < Infinity)) return false;

@@ -21,8 +21,9 @@ import type { RotorStepScratch } from './rotor-step.js';
 import { STEP_H } from './step-constants.js';
 import { isStateFinite } from './step-state.js';
 
-function isZero(a: Float64Array): boolean {
-  for (let i = 0; i < a.length; i += 1) if (a[i] !== 0) return false;
+/** Whether a[at .. at + len) is all zeros. */
+function isZeroRun(a: Float64Array, at: number, len: number): boolean {
+  for (let i = at; i < at + len; i += 1) if (a[i] !== 0) return false;
   return true;
 }
 
@@ -40,21 +41,26 @@ export function integratePositions(
   constants: Float64Array,
   scratch: RotorStepScratch,
 ): number {
-  const n = D.n;
+  const { n, k } = D;
+  // where v, L and w start in a body record (see Body.storage: x, R, v, L, w, force, torque)
+  const vAt = n + D.r;
+  const lAt = vAt + n;
   const h = constants[STEP_H]!;
   for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
     const motion = body.motion;
     if (motion === MOTION_STATIC || body.sleeping) continue;
-    const x = body.x;
-    const v = body.v;
-    for (let i = 0; i < n; i += 1) x[i] = x[i]! + h * v[i]!;
+    // x, v and L through the record (a body makes its views only when asked for them)
+    const s = body.storage;
+    const at = body.storageOffset;
+    const v = at + vAt;
+    for (let i = 0; i < n; i += 1) s[at + i] = s[at + i]! + h * s[v + i]!;
     if (motion === MOTION_DYNAMIC) {
       // A body with no angular momentum has ω = 0 and keeps its rotor.
-      if (!isZero(body.L)) {
+      if (!isZeroRun(s, at + lAt, k)) {
         advanceRotor(D, body.R, body.w, body.L, body.invInertia, constants, scratch);
       }
-    } else if (!isZero(body.w)) {
+    } else if (!isZeroRun(s, at + lAt + k, k)) {
       advanceRotorKinematic(D, body.R, body.w, constants, scratch);
       if (body.massValue > 0) momentumFromAngularVelocity(D, body.L, body.R, body.inertia, body.w, scratch.tmp);
     }

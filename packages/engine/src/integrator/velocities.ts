@@ -33,17 +33,22 @@ export function integrateVelocities(
   tmp: Float64Array,
 ): void {
   const { n, k } = D;
+  // where v and the force start in a body record (see Body.storage: x, R, v, L, w, force, torque)
+  const vAt = n + D.r;
+  const forceAt = vAt + n + 2 * k;
   const h = constants[STEP_H]!;
   const linearScale = constants[STEP_LINEAR_SCALE]!;
   const angularScale = constants[STEP_ANGULAR_SCALE]!;
   for (let b = 0; b < count; b += 1) {
     const body = bodies[b]!;
     if (body.motion !== MOTION_DYNAMIC || body.sleeping) continue;
-    const v = body.v;
-    const f = body.force;
+    // v and the force through the record (a body makes its views only when asked for them)
+    const s = body.storage;
+    const v = body.storageOffset + vAt;
+    const f = body.storageOffset + forceAt;
     const im = body.invMass;
-    for (let i = 0; i < n; i += 1) v[i] = v[i]! + h * (f[i]! * im + gravity[i]!);
-    if (linearScale !== 1) for (let i = 0; i < n; i += 1) v[i] = v[i]! * linearScale;
+    for (let i = 0; i < n; i += 1) s[v + i] = s[v + i]! + h * (s[f + i]! * im + gravity[i]!);
+    if (linearScale !== 1) for (let i = 0; i < n; i += 1) s[v + i] = s[v + i]! * linearScale;
     if (!body.hasTorque && angularScale === 1) continue;
     const L = body.L;
     if (body.hasTorque) {

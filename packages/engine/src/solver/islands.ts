@@ -281,10 +281,14 @@ export class Islands {
     for (let i = 0; i < count; i += 1) {
       const body = bodies[i];
       if (body.motion !== MOTION_DYNAMIC) continue;
+      // v and ω through the record (a body makes its views only when asked for them)
+      const { n, r, k } = body.D;
+      const s = body.storage;
+      const v = body.storageOffset + n + r; // v after x and R, then L, then w
       let v2 = 0;
-      for (let d = 0; d < body.v.length; d += 1) v2 += body.v[d] * body.v[d];
+      for (let i = v; i < v + n; i += 1) v2 += s[i] * s[i];
       let w2 = 0;
-      for (let p = 0; p < body.w.length; p += 1) w2 += body.w[p] * body.w[p];
+      for (let i = v + n + k; i < v + n + 2 * k; i += 1) w2 += s[i] * s[i];
       body.sleepTimer = v2 > lin2 || w2 > ang2 ? 0 : body.sleepTimer + h;
     }
     this.build(awake, contacts, joints, true);

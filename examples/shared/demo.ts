@@ -85,8 +85,14 @@ export interface DemoOptions {
   readonly target?: readonly [number, number, number];
   /** The fixed frame time given to `simulate` (default 1/60 s, so runs are repeatable). */
   readonly frameTime?: number;
-  /** Called before each `simulate` (the page's own per-frame work). */
+  /**
+   * Called once per simulated frame, just before its `simulate`, with the number of frames asked
+   * so far (the page's own per-frame work). Not called while a worker step is in flight, so a
+   * scripted page runs the same in either thread however slow the worker is.
+   */
   readonly beforeFrame?: (frame: number) => void;
+  /** Called at every drawn frame, also while a worker step is in flight (draw timings). */
+  readonly eachDraw?: () => void;
   /** Called after each report (read-outs). */
   readonly afterUpdate?: (frame: number) => void;
   /** An element to write "frame · ms" figures into. */
@@ -171,8 +177,9 @@ export function startDemo(scene: Scene, options: DemoOptions): Demo {
   const loop = (): void => {
     requestAnimationFrame(loop);
     resize();
-    if (!demo.paused && hook.asked < limit) {
-      options.beforeFrame?.(hook.frame);
+    options.eachDraw?.();
+    if (!demo.paused && hook.asked < limit && !hook.scene.busy) {
+      options.beforeFrame?.(hook.asked);
       last = performance.now();
       if (hook.scene.simulate(frameTime, 1)) hook.asked += 1;
     }

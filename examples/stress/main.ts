@@ -89,8 +89,7 @@ startDemo(scene, {
   eye: n === 4 ? [5, 4, 6] : [9.5, 8, 12.5],
   target: [0, 1, 0],
   stats: document.getElementById('stats'),
-  beforeFrame: () => {
-    // called at every drawn frame, also when a worker step is still in flight
+  eachDraw: () => {
     const now = performance.now();
     if (drawn > 0) push(drawMs, now - lastDraw);
     drawn += 1;

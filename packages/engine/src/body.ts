@@ -665,7 +665,7 @@ export class Body {
     if (options.position !== undefined) block.set(options.position, start);
     this.placeCentreOfMass();
     this.boundingRadius = shapeBoundingRadius(D.n, shape);
-    if (options.velocity !== undefined) block.set(options.velocity, start + n + D.r); // (v: after x and R)
+    if (options.velocity !== undefined) block.set(options.velocity, start + Body.velocityOffset(D));
     if (options.angularVelocity !== undefined) {
       this.w.set(options.angularVelocity);
       this.momentumFromOmega();
@@ -680,6 +680,14 @@ export class Body {
   /** Number of Float64 entries of the state part of a record: x (n), R (r), v (n), L (k), w (k). */
   static stateLength(D: Dims): number {
     return 2 * D.n + D.r + 2 * D.k;
+  }
+
+  /**
+   * @internal Where v starts in a record (after x and R); L follows v, w follows L, and the force
+   * starts at {@link Body.stateLength}. For the step's loops, which read the record, not the views.
+   */
+  static velocityOffset(D: Dims): number {
+    return D.n + D.r;
   }
 
   /** How the body moves: 'dynamic', 'static' or 'kinematic'. */
@@ -1246,7 +1254,7 @@ export class Body {
 
   /** @internal Clears the accumulated force and torque. */
   clearForces(): void {
-    const at = this.storageOffset + 2 * this.D.n + this.D.r + 2 * this.D.k; // (the force: after x, R, v, L, w)
+    const at = this.storageOffset + Body.stateLength(this.D); // (the force follows the state)
     this.storage.fill(0, at, at + this.D.n);
     if (this.hasTorque) {
       this.torque.fill(0);

@@ -1067,7 +1067,7 @@ export class WorldBase {
   private reachAndMove(body: Body): boolean {
     const speeds = this.scratch.speeds;
     const D = this.D;
-    const v = body.storageOffset + D.n + D.r; // v after x and R, then L (k numbers), then w
+    const v = body.storageOffset + Body.velocityOffset(D); // then L (k numbers), then w
     robustNormInto(speeds, 0, body.storage, v, D.n);
     robustNormInto(speeds, 1, body.storage, v + D.n + D.k, D.k);
     const speed = speeds[0]!;

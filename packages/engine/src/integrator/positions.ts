@@ -13,8 +13,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
-import type { Body } from '../body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import { momentumFromAngularVelocity } from '../inertia-world.js';
 import { advanceRotor, advanceRotorKinematic } from './rotor-step.js';
 import type { RotorStepScratch } from './rotor-step.js';
@@ -43,7 +42,7 @@ export function integratePositions(
 ): number {
   const { n, k } = D;
   // where v, L and w start in a body record (see Body.storage: x, R, v, L, w, force, torque)
-  const vAt = n + D.r;
+  const vAt = Body.velocityOffset(D);
   const lAt = vAt + n;
   const h = constants[STEP_H]!;
   for (let b = 0; b < count; b += 1) {

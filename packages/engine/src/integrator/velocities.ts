@@ -8,8 +8,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import { MOTION_DYNAMIC } from '../body.js';
-import type { Body } from '../body.js';
+import { Body, MOTION_DYNAMIC } from '../body.js';
 import { angularVelocityFromMomentum } from '../inertia-world.js';
 import { STEP_ANGULAR_SCALE, STEP_H, STEP_LINEAR_SCALE } from './step-constants.js';
 
@@ -34,8 +33,8 @@ export function integrateVelocities(
 ): void {
   const { n, k } = D;
   // where v and the force start in a body record (see Body.storage: x, R, v, L, w, force, torque)
-  const vAt = n + D.r;
-  const forceAt = vAt + n + 2 * k;
+  const vAt = Body.velocityOffset(D);
+  const forceAt = Body.stateLength(D);
   const h = constants[STEP_H]!;
   const linearScale = constants[STEP_LINEAR_SCALE]!;
   const angularScale = constants[STEP_ANGULAR_SCALE]!;

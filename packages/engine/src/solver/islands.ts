@@ -19,8 +19,7 @@
  *
  * @module
  */
-import type { Body } from '../body.js';
-import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import type { ContactSet } from '../contacts/contact-set.js';
 import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
@@ -282,9 +281,9 @@ export class Islands {
       const body = bodies[i];
       if (body.motion !== MOTION_DYNAMIC) continue;
       // v and ω through the record (a body makes its views only when asked for them)
-      const { n, r, k } = body.D;
+      const { n, k } = body.D;
       const s = body.storage;
-      const v = body.storageOffset + n + r; // v after x and R, then L, then w
+      const v = body.storageOffset + Body.velocityOffset(body.D); // then L, then w
       let v2 = 0;
       for (let i = v; i < v + n; i += 1) v2 += s[i] * s[i];
       let w2 = 0;

@@ -261,7 +261,8 @@ const standing = (scene) => {
     met: yesNo(r.stands === true && !r.capped),
   });
 };
-const limits3D = { stack9: 2, pyramid20: 2, pile1000: 3, pyramid100: 1 };
+// the goals of the scale work: Rapier's time or less on every 3D scene, 4D at most 1.5× our 3D
+const limits3D = { stack9: 1, pyramid20: 1, pile1000: 1, pyramid100: 1 };
 for (const layout of layouts3D) {
   const scene = layout.name;
   within(
@@ -278,7 +279,7 @@ for (const { name: scene } of layouts3D) {
   targets.push({ target: `${scene}: faster than cannon-es`, measured: fmtRatio(x), limit: '< 1×', met: yesNo(x < 1) });
 }
 if (nResults['stack9 4D'] !== undefined)
-  within('stack9 4D / stack9 3D (PhysiN ms/step, same turns)', nResults['stack9 4D'].median, nResults['stack9 3D'].median, 2);
+  within('stack9 4D / stack9 3D (PhysiN ms/step, same turns)', nResults['stack9 4D'].median, nResults['stack9 3D'].median, 1.5);
 medianTable('Targets (medians of ms/step; reported, not asserted)', targets);
 
 const physinRuns = [...Object.values(results).map((r) => r.PhysiN), ...Object.values(nResults)];

@@ -97,7 +97,9 @@ const SC_HERTZ_MAX = 10;
 export const SC_TOL = 12;
 /** The impulse handed to applyRow (through the array: a double argument would be boxed). */
 const SC_DL = 11;
-const SC_COUNT = 13;
+/** constraintProjectionTolerance: the linear error at which the position projection stops (m). */
+const SC_DONE = 13;
+const SC_COUNT = 14;
 
 /** Gauss–Seidel passes of the end-of-sub-step velocity projection over the joints outside the tree. */
 const VELOCITY_PROJECTION_PASSES = 3;
@@ -230,6 +232,12 @@ export class JointSolver {
   /** Per joint: jFirst·65536 + jBlock when the tree was last factored in the projection. */
   private layoutBlock = new Int32Array(16);
   private layoutRows = -1;
+  /**
+   * What `rigidResidual` measured: [0] the largest |C − target| of the rigid equality rows, [1]
+   * that of their angular rows alone. Through an array: a double returned by a call V8 does not
+   * inline is boxed (an allocation per call).
+   */
+  private residual = new Float64Array(2);
 
   constructor(D: Dims) {
     const { n, k, r } = D;
@@ -283,6 +291,7 @@ export class JointSolver {
     sc[SC_DAMPING] = p.constraintDamping;
     sc[SC_HERTZ_MAX] = p.constraintHertzRatio / h;
     sc[SC_TOL] = p.constraintTolerance;
+    sc[SC_DONE] = p.constraintProjectionTolerance;
     const warm = p.useWarmStart;
     this.count = 0;
     this.rowCount = 0;
@@ -789,6 +798,15 @@ export class JointSolver {
       }
     }
     const tolerance = POSITION_TOLERANCE * this.sc[SC_SLOP];
+    // Once every angular row is at rounding, a linear residual within constraintProjectionTolerance
+    // (1e-9 m at the defaults) ends the projection after a pass. Angular rows are still taken to
+    // rounding: their error, −2⟨Q⟩_p, is ill-conditioned near a half turn (a 4D pin stopped at 1e-9
+    // passed a 1e-12 angle error on to a w-plane spin that grew to 2e-3 rad/s at the step its
+    // rotor's scalar part crossed 0). Below `tolerance` (1e-5 m) one pass is always taken, a Newton
+    // step that takes a settling chain to rounding (skipped, errors of 1e-15 add up to 1e-9); a
+    // tolerance at or above it also skips the projection when the sub-step left the error within it.
+    const done = this.sc[SC_DONE];
+    const first = done >= tolerance ? 0 : 1;
     const most = iterations * POSITION_PASSES_FACTOR;
     // The tree is factored at the first pass and its factorisation reused (a chord Newton step)
     // while the rows keep their layout and each pass shrinks the residual at least REUSE_RATE-fold;
@@ -804,9 +822,11 @@ export class JointSolver {
       // Rows from the current poses (the impulses were stored already); after a factorisation,
       // C alone, for a chord step (a pass that factors again rebuilds them in full, below).
       this.buildProjectionRows(factored);
-      const residual = this.rigidResidual();
-      // An error at the level of rounding ends the projection at once.
-      if (residual <= FINE_RESIDUAL) break;
+      this.rigidResidual();
+      const residual = this.residual[0];
+      // An error at the level of rounding ends the projection at once, and so does a linear error
+      // within `done` with the angular rows at rounding (after `first` passes).
+      if (residual <= FINE_RESIDUAL || (it >= first && residual <= done && this.residual[1] <= FINE_RESIDUAL)) break;
       const canReuse = factored === 1 && this.sameLayout() === 1;
       // A chord step that no longer shrinks the error by REUSE_RATE: at the rounding floor, the
       // projection is done; above it, the tree is factored again.
@@ -889,22 +909,27 @@ export class JointSolver {
 
   /**
    * The largest |C − target| over the equality rows of the rigid joints (rows just built): what
-   * the position projection has left to remove.
+   * the position projection has left to remove, into `residual[0]`; the largest over the angular
+   * rows alone into `residual[1]`.
    */
-  private rigidResidual(): number {
+  private rigidResidual(): void {
     const RS = this.RS;
     const rows = this.rows;
     const ok = this.layoutOk === 1;
+    const kind = this.rowKind;
     let worst = 0;
+    let angular = 0;
     for (let j = 0; j < this.count; j += 1) {
       if (this.jSoft[j] !== 0) continue;
       const first = this.jFirst[j];
       for (let q = first; q < first + this.jBlock[j]; q += 1) {
         const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
         if (e > worst) worst = e;
+        if (kind[q] !== KIND_LINEAR && e > angular) angular = e;
       }
     }
-    return worst;
+    this.residual[0] = worst;
+    this.residual[1] = angular;
   }
 
   /**

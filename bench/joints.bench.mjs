@@ -11,7 +11,8 @@
 //                  z = 0 pinned to the world; it swings down about that row.
 //   chain10 4D     the whipping chain in 4D (PhysiN only).
 // PhysiN: default parameters (iterations 10, subSteps 1) but allowSleep false; an extra row with
-// subSteps 4 for the chains. Rapier: default integration parameters, timestep 1/60, spherical
+// subSteps 4 for the chains, and one with constraintProjectionTolerance 1e-3 (the position projection
+// stops at 1 mm, a tenth of issue 19's goal of 0.01; the default is 1e-9). Rapier: default integration parameters, timestep 1/60, spherical
 // impulse joints. cannon-es: GSSolver 10 iterations, SAPBroadphase, PointToPointConstraint.
 // Contacts between the two bodies of a joint are off in every engine.
 //
@@ -132,6 +133,13 @@ const warmPhysin = () => S.physinChain({ n: 3 });
 const warmRapier = () => S.rapierChain(RAPIER);
 const warmCannon = () => S.cannonChain(CANNON);
 
+/**
+ * The issue's goal is a worst error of 0.01: PhysiN also runs with its position projection
+ * stopped at 1 mm (constraintProjectionTolerance, default 1e-9 m), a tenth of that goal.
+ */
+const LOOSE_TOLERANCE = 1e-3;
+const LOOSE = 'PhysiN projection 1e-3';
+
 const runs = [
   {
     scene: 'chain10 whip',
@@ -147,6 +155,14 @@ const runs = [
     bodies: 10,
     joints: 10,
     build: () => S.physinChain({ start: 'horizontal', params: { subSteps: 4 } }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 whip',
+    engine: LOOSE,
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'horizontal', params: { constraintProjectionTolerance: LOOSE_TOLERANCE } }),
     warm: warmPhysin,
   },
   {
@@ -183,6 +199,14 @@ const runs = [
   },
   {
     scene: 'chain10 hang',
+    engine: LOOSE,
+    bodies: 10,
+    joints: 10,
+    build: () => S.physinChain({ start: 'hanging', params: { constraintProjectionTolerance: LOOSE_TOLERANCE } }),
+    warm: warmPhysin,
+  },
+  {
+    scene: 'chain10 hang',
     engine: 'Rapier',
     bodies: 10,
     joints: 10,
@@ -198,6 +222,14 @@ const runs = [
     warm: warmCannon,
   },
   { scene: 'grid20', engine: 'PhysiN', bodies: 400, joints: 780, build: () => S.physinGrid(), warm: warmPhysin },
+  {
+    scene: 'grid20',
+    engine: LOOSE,
+    bodies: 400,
+    joints: 780,
+    build: () => S.physinGrid({ params: { constraintProjectionTolerance: LOOSE_TOLERANCE } }),
+    warm: warmPhysin,
+  },
   { scene: 'grid20', engine: 'Rapier', bodies: 400, joints: 780, build: () => S.rapierGrid(RAPIER), warm: warmRapier },
   { scene: 'grid20', engine: 'cannon-es', bodies: 400, joints: 780, build: () => S.cannonGrid(CANNON), warm: warmCannon },
 ];
@@ -283,6 +315,8 @@ medianTable(
     return {
       scene,
       'time PhysiN/Rapier': ratio(p.median, ra.median),
+      [`time ${LOOSE}/Rapier`]: ratio(results[`${scene}|${LOOSE}`]?.median, ra.median),
+      [`error ${LOOSE}`]: results[`${scene}|${LOOSE}`]?.worst,
       'time PhysiN/cannon-es': ratio(p2.median, ca.median),
       'error PhysiN/Rapier': ratio(p.worst, ra.worst),
       'error PhysiN/cannon-es': ratio(p.worst, ca.worst),
@@ -352,7 +386,26 @@ const targets = [
     met: yesNo(whip < results['chain10 whip|cannon-es'].worst),
   },
 ];
-medianTable('Targets (worst joint error of the whipping chain; reported, not asserted)', targets);
+// Issue 19's time goals: the chains at ≤ 1× Rapier with a worst error ≤ 0.01, the grid at ≤ 1.5×.
+for (const [scene, limit] of [
+  ['chain10 whip', 1],
+  ['chain10 hang', 1],
+  ['grid20', 1.5],
+]) {
+  const ra = results[`${scene}|Rapier`];
+  for (const engine of ['PhysiN', LOOSE]) {
+    const x = results[`${scene}|${engine}`];
+    if (x === undefined || ra === undefined) continue;
+    const t = ratio(x.median, ra.median);
+    targets.push({
+      target: `${scene}, ${engine}: time/Rapier in the same turns, worst error ≤ 0.01`,
+      measured: `${fmt(t)}×, ${fmt(x.worst)} m`,
+      limit: `≤ ${limit}×`,
+      met: yesNo(t <= limit && x.worst <= 0.01),
+    });
+  }
+}
+medianTable('Targets (worst joint error of the whipping chain; time against Rapier; reported, not asserted)', targets);
 
 if (Object.values(results).some((r) => r.capped && !r.error))
   console.log(

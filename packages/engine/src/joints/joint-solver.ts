@@ -232,6 +232,8 @@ export class JointSolver {
   /** Per joint: jFirst·65536 + jBlock when the tree was last factored in the projection. */
   private layoutBlock = new Int32Array(16);
   private layoutRows = -1;
+  /** 1 while the tree holds the prepare's factorisation of this sub-step (the velocity passes keep it). */
+  private prepTree = 0;
   /**
    * What `rigidResidual` measured: [0] the largest |C − target| of the rigid equality rows, [1]
    * that of their angular rows alone. Through an array: a double returned by a call V8 does not
@@ -324,6 +326,9 @@ export class JointSolver {
       this.tree.factor(this, sb);
       this.tree.stiffness = 0;
     }
+    // The layout the prepare's factorisation belongs to (the projection may reuse it, below).
+    this.saveLayout();
+    this.prepTree = inTree > 0 ? 1 : 0;
     return this.count;
   }
 
@@ -838,7 +843,14 @@ export class JointSolver {
       if (it >= iterations && residual <= tolerance && (canReuse === false || (stalled && late === 1))) break;
       const reuse = canReuse && (residual <= REUSE_RATE * before || (it >= iterations && residual <= tolerance));
       before = residual;
-      if (reuse) {
+      if (it === 0 && residual <= FLOOR_RESIDUAL && this.prepTree === 1 && this.sameLayout() === 1) {
+        // An error this small (a settling chain: 1e-15) takes one step with the prepare's
+        // factorisation, still in the tree, instead of a factorisation of its own: its Jacobians
+        // are those of the start of the sub-step, but a step of 1e-12 cannot throw a body far,
+        // and a pass that leaves more than the tolerance factors at the next pass.
+        this.tree.solvePositions(this, sb);
+        chord = 0;
+      } else if (reuse) {
         this.tree.solvePositions(this, sb);
         chord = 1;
       } else {

@@ -733,9 +733,9 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'orderHoles',
     'solverSet',
   ],
-  ManifoldCache: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
+  ManifoldCache: ['n', 'P', 'valid', 'data', 'S', 'NO', 'LO', 'now', 'world'],
   // The root World's cache: ManifoldCache with the 4D reuse written out, no field of its own.
-  ManifoldCacheND: ['n', 'P', 'valid', 'pose', 'local', 'normal', 'now', 'world'],
+  ManifoldCacheND: ['n', 'P', 'valid', 'data', 'S', 'NO', 'LO', 'now', 'world'],
   TreeBroadphase: [
     'n',
     'margin',

@@ -346,14 +346,30 @@ export class ContactSet {
     links.next = growInt32(links.next, 2 * cap);
     links.prev = growInt32(links.prev, 2 * cap);
     links.mark = growInt32(links.mark, cap);
-    for (let s = cap - 1; s >= this.capacity; s -= 1) {
+    // The new slots' manifolds are views of one buffer, each slot's numbers side by side (normal,
+    // separations, points, ids): the solver's prepare and the narrowphase then read a slot from
+    // adjacent cache lines, where arrays of their own lay scattered, a cache miss each. (Filled
+    // upwards: the slot lists stay packed arrays.)
+    const n = this.n;
+    const stride = (n + P + P * n) * 8 + P * 4 + 4 * (P & 1);
+    const slab = new ArrayBuffer((cap - this.capacity) * stride);
+    for (let s = this.capacity, at = 0; s < cap; s += 1, at += stride) {
       this.bodyA[s] = null;
       this.bodyB[s] = null;
       this.shapeA[s] = null;
       this.shapeB[s] = null;
       this.poseA[s] = null;
       this.poseB[s] = null;
-      this.manifolds[s] = createManifold(this.n, this.pointCapacity);
+      // (the fields in createManifold's order: one object shape for every manifold)
+      this.manifolds[s] = {
+        n,
+        capacity: P,
+        count: 0,
+        normal: new Float64Array(slab, at, n),
+        points: new Float64Array(slab, at + (n + P) * 8, P * n),
+        separations: new Float64Array(slab, at + n * 8, P),
+        ids: new Uint32Array(slab, at + (n + P + P * n) * 8, P),
+      };
     }
     // New slots are handed out lowest first.
     for (let s = cap - 1; s >= this.capacity; s -= 1) this.freeSlots[this.freeCount++] = s;

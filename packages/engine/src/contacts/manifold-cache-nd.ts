@@ -24,8 +24,8 @@ export class ManifoldCacheND extends ManifoldCache {
     const MB = poseB.M;
     const xA = poseA.x;
     const xB = poseB.x;
-    const C = this.normal;
-    const c = slot * 4;
+    const C = this.data;
+    const c = slot * this.S + this.NO;
     const m0 = C[c],
       m1 = C[c + 1],
       m2 = C[c + 2],
@@ -38,7 +38,7 @@ export class ManifoldCacheND extends ManifoldCache {
     N[1] = n1;
     N[2] = n2;
     N[3] = n3;
-    const local = this.local;
+    const local = this.data;
     const pts = m.points;
     const xa0 = xA[0],
       xa1 = xA[1],
@@ -49,7 +49,7 @@ export class ManifoldCacheND extends ManifoldCache {
       xb2 = xB[2],
       xb3 = xB[3];
     for (let p = 0; p < m.count; p += 1) {
-      const o = (slot * this.P + p) * 8;
+      const o = slot * this.S + this.LO + p * 8;
       const la0 = local[o],
         la1 = local[o + 1],
         la2 = local[o + 2],

@@ -33,12 +33,19 @@ export class ManifoldCache {
   protected readonly P: number;
   /** 1 where the slot holds a cached manifold. */
   private valid = new Uint8Array(16);
-  /** Per slot: B's position (n) and rotation (n×n) in A's frame when the manifold was computed. */
-  private pose: Float64Array;
-  /** Per slot and point: the surface point on A in A's frame, then the one on B in B's frame. */
-  protected local: Float64Array;
-  /** Per slot: the normal in A's frame. */
-  protected normal: Float64Array;
+  /**
+   * Per slot, side by side (`S` numbers; a check and a reuse then read adjacent cache lines, where
+   * three arrays cost a miss each in a pile): B's position (n) and rotation (n×n) in A's frame
+   * when the manifold was computed; at `NO` the normal in A's frame (n); at `LO`, per point, the
+   * surface point on A in A's frame, then the one on B in B's frame (2n).
+   */
+  protected data: Float64Array;
+  /** Numbers per slot of `data`. */
+  protected readonly S: number;
+  /** Where the normal starts in a slot of `data`. */
+  protected readonly NO: number;
+  /** Where the surface points start in a slot of `data`. */
+  protected readonly LO: number;
   /** The relative pose of the pair last checked (kept for `store`). */
   private readonly now: Float64Array;
   private readonly world: Float64Array;
@@ -46,9 +53,10 @@ export class ManifoldCache {
   constructor(n: number, pointsPerSlot: number) {
     this.n = n;
     this.P = pointsPerSlot;
-    this.pose = new Float64Array(16 * (n + n * n));
-    this.local = new Float64Array(16 * pointsPerSlot * 2 * n);
-    this.normal = new Float64Array(16 * n);
+    this.NO = n + n * n;
+    this.LO = this.NO + n;
+    this.S = this.LO + pointsPerSlot * 2 * n;
+    this.data = new Float64Array(16 * this.S);
     this.now = new Float64Array(n + n * n);
     this.world = new Float64Array(2 * n);
   }
@@ -56,13 +64,10 @@ export class ManifoldCache {
   /** Makes room for `capacity` slots (new slots hold nothing). */
   ensureSlots(capacity: number): void {
     if (capacity <= this.valid.length) return;
-    const n = this.n;
     const valid = new Uint8Array(capacity);
     valid.set(this.valid);
     this.valid = valid;
-    this.pose = growFloat64(this.pose, capacity * (n + n * n));
-    this.local = growFloat64(this.local, capacity * this.P * 2 * n);
-    this.normal = growFloat64(this.normal, capacity * n);
+    this.data = growFloat64(this.data, capacity * this.S);
   }
 
   /** @internal Whether the slot holds a cached manifold (for world snapshots). */
@@ -75,13 +80,11 @@ export class ManifoldCache {
    * (n + n² numbers), the normal in A's frame (n) and the surface points (2n per point, P points).
    */
   slotViews(slot: number): { pose: Float64Array; normal: Float64Array; local: Float64Array } {
-    const n = this.n;
-    const m = n + n * n;
-    const L = this.P * 2 * n;
+    const base = slot * this.S;
     return {
-      pose: this.pose.subarray(slot * m, slot * m + m),
-      normal: this.normal.subarray(slot * n, slot * n + n),
-      local: this.local.subarray(slot * L, slot * L + L),
+      pose: this.data.subarray(base, base + this.NO),
+      normal: this.data.subarray(base + this.NO, base + this.LO),
+      local: this.data.subarray(base + this.LO, base + this.S),
     };
   }
 
@@ -117,8 +120,8 @@ export class ManifoldCache {
       }
     }
     if (this.valid[slot] === 0) return false;
-    const base = slot * (n + n * n);
-    const cached = this.pose;
+    const base = slot * this.S;
+    const cached = this.data;
     let dx2 = 0;
     for (let c = 0; c < n; c += 1) {
       const d = now[c] - cached[base + c];
@@ -144,8 +147,9 @@ export class ManifoldCache {
       this.valid[slot] = 0;
       return;
     }
-    const base = slot * (n + n * n);
-    for (let e = 0; e < n + n * n; e += 1) this.pose[base + e] = this.now[e];
+    const data = this.data;
+    const base = slot * this.S;
+    for (let e = 0; e < n + n * n; e += 1) data[base + e] = this.now[e];
     const N = m.normal;
     const MA = poseA.M;
     const MB = poseB.M;
@@ -154,9 +158,8 @@ export class ManifoldCache {
     for (let c = 0; c < n; c += 1) {
       let s = 0;
       for (let i = 0; i < n; i += 1) s += MA[i * n + c] * N[i];
-      this.normal[slot * n + c] = s;
+      data[base + this.NO + c] = s;
     }
-    const local = this.local;
     const world = this.world;
     for (let p = 0; p < count; p += 1) {
       const half = 0.5 * m.separations[p];
@@ -166,7 +169,7 @@ export class ManifoldCache {
         world[i] = q - half * N[i] - xA[i];
         world[n + i] = q + half * N[i] - xB[i];
       }
-      const o = (slot * this.P + p) * 2 * n;
+      const o = base + this.LO + p * 2 * n;
       for (let c = 0; c < n; c += 1) {
         let sa = 0;
         let sb = 0;
@@ -174,8 +177,8 @@ export class ManifoldCache {
           sa += MA[i * n + c] * world[i];
           sb += MB[i * n + c] * world[n + i];
         }
-        local[o + c] = sa;
-        local[o + n + c] = sb;
+        data[o + c] = sa;
+        data[o + n + c] = sb;
       }
     }
     this.valid[slot] = 1;
@@ -188,8 +191,10 @@ export class ManifoldCache {
    */
   reuse(slot: number, m: Manifold, poseA: Pose, poseB: Pose): void {
     const n = this.n;
+    const data = this.data;
+    const base = slot * this.S;
     if (n === 3) {
-      reuse3(m, poseA, poseB, this.normal, this.local, slot * 3, slot * this.P * 6);
+      reuse3(m, poseA, poseB, data, base + this.NO, base + this.LO);
       return;
     }
     const N = m.normal;
@@ -199,13 +204,13 @@ export class ManifoldCache {
     const xB = poseB.x;
     for (let i = 0; i < n; i += 1) {
       let s = 0;
-      for (let c = 0; c < n; c += 1) s += MA[i * n + c] * this.normal[slot * n + c];
+      for (let c = 0; c < n; c += 1) s += MA[i * n + c] * data[base + this.NO + c];
       N[i] = s;
     }
-    const local = this.local;
+    const local = data;
     const world = this.world;
     for (let p = 0; p < m.count; p += 1) {
-      const o = (slot * this.P + p) * 2 * n;
+      const o = base + this.LO + p * 2 * n;
       for (let i = 0; i < n; i += 1) {
         let sa = xA[i];
         let sb = xB[i];
@@ -246,9 +251,11 @@ function relativePose3(now: Float64Array, MA: Float64Array, MB: Float64Array, xA
 
 /**
  * {@link ManifoldCache.reuse} for n = 3, written out (the same sums in the same order as the
- * general loops, so bit-identical). `c`: the slot's normal at `normal[c]`; `o`: its points at `local[o]`.
+ * general loops, so bit-identical). `c`: the slot's normal at `data[c]`; `o`: its points at `data[o]`.
  */
-function reuse3(m: Manifold, poseA: Pose, poseB: Pose, normal: Float64Array, local: Float64Array, c: number, o: number): void {
+function reuse3(m: Manifold, poseA: Pose, poseB: Pose, data: Float64Array, c: number, o: number): void {
+  const normal = data;
+  const local = data;
   const N = m.normal;
   const A = poseA.M;
   const B = poseB.M;

@@ -15,7 +15,7 @@
 // drift of a shared machine falls on both; the cells are medians over the rounds. The target of issue 19 is ≤ 0.2 s for add and remove together.
 //
 // Options (environment): SCALE_BODIES (default 32000), SCALE_ROUNDS (default 5), SCALE_RAPIER=0 to
-// leave Rapier out (its removal is quadratic: about 150 s a round for 32,000 on the shared machine).
+// leave Rapier out (its removal is quadratic: 50 to 150 s a round for 32,000 on the shared machine).
 //
 // Run: node bench/scale.bench.mjs   (after the build: it imports the BUILT packages)
 import { performance } from 'node:perf_hooks';

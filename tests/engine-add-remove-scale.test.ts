@@ -8,7 +8,9 @@
  *   the tree against itself, not one query per body; removing every body empties the tree in
  *   one pass, not one removal each;
  * - the tree broadphase finds the same pairs as sweep-and-prune through big batches of births,
- *   deaths and moves (the paths of the bulk build and the walk).
+ *   deaths and moves (the paths of the bulk build and the walk);
+ * - a ball that touches nothing keeps no pose (the collision code's copy of x and R): it gets one
+ *   when a pair, a joint or a query reads it, equal to its state.
  */
 import { afterEach, describe, expect, it, vi } from 'vitest';
 import { proxyBounds, validateTree } from '../packages/engine/src/collision/broadphase-queries.js';
@@ -148,6 +150,27 @@ describe('the step after a batch', () => {
     const a = batch.bodies.flatMap((b) => [...b.x, ...b.v]);
     const b = single.bodies.flatMap((b) => [...b.x, ...b.v]);
     expect(a).toEqual(b);
+  });
+});
+
+describe('poses made on demand', () => {
+  it('a ball alone has no pose until it meets another or a query reads it; the pose is then its state', () => {
+    const world = new World({ dimensions: 3, gravity: [0, -9.81, 0] });
+    const a = world.addBody(ball(0));
+    const b = world.addBody(ball(1));
+    for (let s = 0; s < 3; s += 1) world.step(1 / 60);
+    expect([a.pose, b.pose]).toEqual([null, null]);
+    // moved by hand onto a: the step's new pair gives both their poses
+    b.setPositionN([a.x[0]! + 0.3, a.x[1]!, a.x[2]!]);
+    world.step(1 / 60);
+    for (const body of [a, b]) {
+      expect(Array.from(body.pose!.x)).toEqual(Array.from(body.x));
+      expect(Array.from(body.pose!.M, (v) => v + 0)).toEqual([1, 0, 0, 0, 1, 0, 0, 0, 1]); // (+ 0: -0 is 0 here)
+    }
+    const c = world.addBody(ball(5));
+    expect(c.pose).toBeNull();
+    expect(queryBox(world, [4.5, 0.5, -0.5], [5.5, 1.5, 0.5])).toEqual([c]);
+    expect(Array.from(c.pose!.x)).toEqual(Array.from(c.x));
   });
 });
 

@@ -676,6 +676,9 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'brokenJoints',
     'jointOwner',
     'reach',
+    // scratch, and a flag set again as the restored bodies get their proxies
+    'lazyPose',
+    'lazyPoses',
     'boundsStale',
     'events',
     'collisionEvent',

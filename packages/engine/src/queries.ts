@@ -116,6 +116,9 @@ interface WorldQueryParts {
   readonly bodyOfProxy: readonly (Body | null)[];
   readonly proxyTables: ProxyTables;
   compact(): void;
+  lazyPoses: boolean;
+  readonly bodyList: readonly Body[];
+  ensurePose(body: Body): void;
   updatePose(body: Body): void;
   moveProxy(body: Body): void;
 }
@@ -159,6 +162,10 @@ export function queryParts(world: WorldBase): {
     }
     w.boundsStale = false;
   }
+  // Every body gets its pose: a query reads any proxy's (after the poses of bodies moved by hand
+  // were refreshed above, so a pose made now is the record's).
+  if (w.lazyPoses) for (const body of w.bodyList) w.ensurePose(body);
+  w.lazyPoses = false;
   const t = w.proxyTables;
   return {
     broadphase: w.broadphase,

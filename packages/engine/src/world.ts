@@ -302,6 +302,12 @@ export class WorldBase {
   };
   /** Per body (world index): the distance it can close in one sub-step (m), for speculative contacts. */
   private reach = new Float64Array(16);
+  /**
+   * Where the bounds of a body without a pose are computed (see ensurePose); whether a body in
+   * the proxy tables has no pose yet.
+   */
+  private readonly lazyPose: Pose;
+  private lazyPoses = false;
   /** @internal Whether the broadphase boxes lag the poses (the queries and snapshots read it). */
   boundsStale = false;
   private readonly events: ContactEvents;
@@ -386,6 +392,7 @@ export class WorldBase {
       speeds: new Float64Array(2),
     };
     this.constants = createStepConstants();
+    this.lazyPose = slabPose(poseSlab, D.n);
     const unit = params.lengthUnit;
     this.broadphase = new TreeBroadphase(D.n, { margin: DEFAULT_BROADPHASE_MARGIN * unit });
     this.narrowScratch = narrowphaseScratchOf(
@@ -602,15 +609,17 @@ export class WorldBase {
       throw new RangeError(`${fn}: argument 'body' (${body.label}) already belongs to another world; remove it there first`);
     }
     // Bounds first: a body so far out that its box overflows is refused before anything changes.
-    if (body.pose === null || body.pose.x.length !== this.n) body.pose = slabPose(poseSlab, this.n);
-    this.updatePose(body);
     const sc = this.scratch;
     const isHalfSpace = body.shape.kind === 'halfspace';
     const compound = body.shape.kind === 'compound' ? (body.shape as unknown as CompoundShape) : null;
+    // A plain body gets its pose when something reads it (ensurePose): 32,000 poses, about 280
+    // bytes each, were half of what the collector moved when a world was built.
+    if (body.pose?.x.length !== this.n) body.pose = isHalfSpace || compound !== null ? slabPose(poseSlab, this.n) : null;
+    this.updatePose(body);
     const partPoses: Pose[] = [];
     let finite = 0;
     // One proxy per part: each part's box must be finite.
-    if (compound !== null) finite = compound.worldOps.newPartPoses(this.n, body.pose, compound, sc.min, sc.max, partPoses);
+    if (compound !== null) finite = compound.worldOps.newPartPoses(this.n, body.pose!, compound, sc.min, sc.max, partPoses);
     else if (isHalfSpace) this.halfSpacePlane(body);
     else this.boundsOf(body);
     if (compound === null) finite = isHalfSpace ? sc.max[0]! * 0 : 0;
@@ -721,7 +730,11 @@ export class WorldBase {
         `World.addConstraint: argument 'joint' must be a joint (PointJoint, DistanceJoint, FixedJoint, HingeJoint, SubspaceJoint), got ${joint === null ? 'null' : typeof joint}`,
       );
     }
-    return (this.jointOps ??= joint.worldJoints).add(this, joint);
+    (this.jointOps ??= joint.worldJoints).add(this, joint);
+    // The joint solver reads its bodies' poses.
+    this.ensurePose(joint.a);
+    this.ensurePose(joint.b);
+    return joint;
   }
 
   /**
@@ -894,9 +907,32 @@ export class WorldBase {
     awake.waking = false;
   }
 
-  /** pose.x = body.x, pose.M = the matrix of body.R. */
+  /** pose.x = body.x, pose.M = the matrix of body.R (nothing for a body without a pose). */
   private updatePose(body: Body): void {
-    const pose = body.pose!;
+    const pose = body.pose;
+    if (pose === null) return;
+    this.fillPose(body, pose);
+    // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
+    const id = body.proxyId;
+    if (id < 0) return;
+    const ids = this.partProxies[id];
+    if (ids !== undefined && ids !== null) {
+      const compound = body.shape as unknown as CompoundShape;
+      compound.worldOps.updatePartPoses(this.n, pose, compound, ids, this.proxyTables.pose);
+    }
+  }
+
+  /**
+   * Gives a body of this world without a pose its own, from its record. A pose always equals the
+   * record when it is read (the step and the queries refresh the poses of bodies moved by hand
+   * first), so a pose made late holds what one kept since addBody would.
+   */
+  private ensurePose(body: Body | null | undefined): void {
+    if (body?.pose === null) this.fillPose(body, (this.proxyTables.pose[body.proxyId] = body.pose = slabPose(poseSlab, this.n)));
+  }
+
+  /** The record's x and the matrix of its R into `pose`. */
+  private fillPose(body: Body, pose: Pose): void {
     // A loop, not pose.x.set(): a builtin call costs more than copying n numbers.
     // Read from the record: the body's views are made only when something asks for them.
     const px = pose.x;
@@ -907,14 +943,6 @@ export class WorldBase {
     const R = this.scratch.rotor.turn; // (scratch of the rotor step, free here: r numbers)
     for (let i = 0; i < R.length; i += 1) R[i] = s[at + n + i]!;
     this.D.kernels.toMatrix(pose.M, R);
-    // (addBody reads the pose before the body has a proxy: partProxies[-1] is a slow lookup by name)
-    const id = body.proxyId;
-    if (id < 0) return;
-    const ids = this.partProxies[id];
-    if (ids !== undefined && ids !== null) {
-      const compound = body.shape as unknown as CompoundShape;
-      compound.worldOps.updatePartPoses(this.n, pose, compound, ids, this.proxyTables.pose);
-    }
   }
 
   /**
@@ -928,6 +956,7 @@ export class WorldBase {
       this.bodyOfProxy[id] = body;
       t.shape[id] = body.shape;
       t.pose[id] = body.pose;
+      if (body.pose === null) this.lazyPoses = true;
       t.part[id] = 0;
       this.partProxies[id] = null;
       return;
@@ -995,7 +1024,8 @@ export class WorldBase {
 
   /** The body's tight bounding box into scratch min / max. */
   private boundsOf(body: Body): void {
-    const pose = body.pose!;
+    let pose = body.pose;
+    if (pose === null) this.fillPose(body, (pose = this.lazyPose));
     computeBoundsUnchecked(this.scratch.min, this.scratch.max, this.n, body.shape as unknown as QueryShape, pose.x, pose.M, 0);
   }
 
@@ -1056,6 +1086,8 @@ export class WorldBase {
     }
     const bp = this.broadphase;
     bp.updatePairs();
+    // The narrowphase reads the poses of a new pair's bodies (fresh here: moved bodies were read above).
+    for (let i = 0; this.lazyPoses && i < 2 * bp.addedCount; i += 1) this.ensurePose(this.bodyOfProxy[bp.addedPairs[i]!]);
     this.contacts.applyPairChanges(bp.removedPairs, bp.removedCount, bp.addedPairs, bp.addedCount, this.bodyOfProxy, this.events);
     return null;
   }

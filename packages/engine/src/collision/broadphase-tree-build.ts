@@ -46,7 +46,8 @@ export class TreeBuilder {
     const hi = tree.nodeMax;
     let innerCount = 0;
     let root = NULL;
-    let top = this.push(0, 0, count, NULL, 0);
+    this.setEntry(0, 0, count, NULL, 0);
+    let top = 1;
     this.centreBounds(tree, leaves, 0, count, 0);
     while (top > 0) {
       top -= 1;
@@ -87,12 +88,7 @@ export class TreeBuilder {
     return root;
   }
 
-  /** Writes stack entry `at` (growing the stack and the bounds with it); returns at + 1. */
-  private push(at: number, begin: number, end: number, parent: number, slot: number): number {
-    this.setEntry(at, begin, end, parent, slot);
-    return at + 1;
-  }
-
+  /** Writes stack entry `at`, growing the stack and the bounds with it. */
   private setEntry(at: number, begin: number, end: number, parent: number, slot: number): void {
     if (4 * at + 4 > this.stack.length) {
       const next = new Int32Array(2 * this.stack.length);

@@ -135,6 +135,6 @@ export function applyBodyFlags(D: Dims, f: BodyFlags): void {
     body.pose ??= createPose(n); // a body that left the world keeps the pose it had there
     body.pose.x.set(f.pose.subarray(0, n));
     body.pose.M.set(f.pose.subarray(n, n + n * n));
-  }
+  } else body.pose = null; // (made from the record when read, see World.ensurePose)
   body.proxyId = f.proxyId;
 }

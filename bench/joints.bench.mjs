@@ -12,7 +12,7 @@
 //   chain10 4D     the whipping chain in 4D (PhysiN only).
 // PhysiN: default parameters (iterations 10, subSteps 1) but allowSleep false; an extra row with
 // subSteps 4 for the chains, and one with constraintProjectionTolerance 1e-3 (the position projection
-// stops at 1 mm, a tenth of issue 19's goal of 0.01; the default is 1e-9). Rapier: default integration parameters, timestep 1/60, spherical
+// stops at 1 mm, a tenth of issue 19's goal of 0.01; the default, 0, projects to rounding). Rapier: default integration parameters, timestep 1/60, spherical
 // impulse joints. cannon-es: GSSolver 10 iterations, SAPBroadphase, PointToPointConstraint.
 // Contacts between the two bodies of a joint are off in every engine.
 //
@@ -135,7 +135,7 @@ const warmCannon = () => S.cannonChain(CANNON);
 
 /**
  * The issue's goal is a worst error of 0.01: PhysiN also runs with its position projection
- * stopped at 1 mm (constraintProjectionTolerance, default 1e-9 m), a tenth of that goal.
+ * stopped at 1 mm (constraintProjectionTolerance; the default, 0, is rounding), a tenth of that goal.
  */
 const LOOSE_TOLERANCE = 1e-3;
 const LOOSE = 'PhysiN projection 1e-3';

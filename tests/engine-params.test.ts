@@ -20,7 +20,7 @@ const table: Record<string, number | boolean> = {
   constraintSlop: 0.001,
   constraintMaxBias: 10,
   constraintTolerance: 1e-6,
-  constraintProjectionTolerance: 1e-9,
+  constraintProjectionTolerance: 0,
   constraintHertz: 0,
   constraintDamping: 1,
   constraintHertzRatio: 0.25,

@@ -113,14 +113,31 @@ export function createManifold(n: number, capacity?: number): Manifold {
     throw new TypeError(`createManifold: 'capacity' must be an integer count of points, got ${String(cap)}`);
   }
   if (cap < 1) throw new RangeError(`createManifold: 'capacity' must be >= 1, got ${cap}`);
+  return manifoldIn(n, cap, new ArrayBuffer(manifoldBytes(n, cap)), 0);
+}
+
+/**
+ * @internal Bytes of one manifold's numbers side by side (normal, separations, points, ids),
+ * padded to 8 so that manifolds laid one after another stay aligned.
+ */
+export function manifoldBytes(n: number, capacity: number): number {
+  return (n + capacity + capacity * n) * 8 + capacity * 4 + 4 * (capacity & 1);
+}
+
+/**
+ * @internal A manifold whose numbers are views of `buffer` from byte `at` (see manifoldBytes):
+ * the contact set lays a block of slots' manifolds in one buffer, so a slot's numbers share cache
+ * lines. No checks: the callers pass what they computed.
+ */
+export function manifoldIn(n: number, capacity: number, buffer: ArrayBuffer, at: number): Manifold {
   return {
     n,
-    capacity: cap,
+    capacity,
     count: 0,
-    normal: new Float64Array(n),
-    points: new Float64Array(cap * n),
-    separations: new Float64Array(cap),
-    ids: new Uint32Array(cap),
+    normal: new Float64Array(buffer, at, n),
+    points: new Float64Array(buffer, at + (n + capacity) * 8, capacity * n),
+    separations: new Float64Array(buffer, at + n * 8, capacity),
+    ids: new Uint32Array(buffer, at + (n + capacity + capacity * n) * 8, capacity),
   };
 }
 

@@ -17,7 +17,7 @@ import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import { collideScratch } from '../collision/collide.js';
 import type { Manifold } from '../collision/manifold.js';
 import type { Pose } from '../collision/manifold.js';
-import { createManifold, createPose, maxManifoldPoints } from '../collision/manifold.js';
+import { createManifold, createPose, manifoldBytes, manifoldIn, maxManifoldPoints } from '../collision/manifold.js';
 import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
@@ -350,8 +350,7 @@ export class ContactSet {
     // separations, points, ids): the solver's prepare and the narrowphase then read a slot from
     // adjacent cache lines, where arrays of their own lay scattered, a cache miss each. (Filled
     // upwards: the slot lists stay packed arrays.)
-    const n = this.n;
-    const stride = (n + P + P * n) * 8 + P * 4 + 4 * (P & 1);
+    const stride = manifoldBytes(this.n, P);
     const slab = new ArrayBuffer((cap - this.capacity) * stride);
     for (let s = this.capacity, at = 0; s < cap; s += 1, at += stride) {
       this.bodyA[s] = null;
@@ -360,16 +359,7 @@ export class ContactSet {
       this.shapeB[s] = null;
       this.poseA[s] = null;
       this.poseB[s] = null;
-      // (the fields in createManifold's order: one object shape for every manifold)
-      this.manifolds[s] = {
-        n,
-        capacity: P,
-        count: 0,
-        normal: new Float64Array(slab, at, n),
-        points: new Float64Array(slab, at + (n + P) * 8, P * n),
-        separations: new Float64Array(slab, at + n * 8, P),
-        ids: new Uint32Array(slab, at + (n + P + P * n) * 8, P),
-      };
+      this.manifolds[s] = manifoldIn(this.n, P, slab, at);
     }
     // New slots are handed out lowest first.
     for (let s = cap - 1; s >= this.capacity; s -= 1) this.freeSlots[this.freeCount++] = s;

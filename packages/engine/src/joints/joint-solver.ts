@@ -804,7 +804,7 @@ export class JointSolver {
     }
     const tolerance = POSITION_TOLERANCE * this.sc[SC_SLOP];
     // Once every angular row is at rounding, a linear residual within constraintProjectionTolerance
-    // (1e-9 m at the defaults) ends the projection after a pass. Angular rows are still taken to
+    // (0 at the defaults: rounding) ends the projection after a pass. Angular rows are still taken to
     // rounding: their error, −2⟨Q⟩_p, is ill-conditioned near a half turn (a 4D pin stopped at 1e-9
     // passed a 1e-12 angle error on to a w-plane spin that grew to 2e-3 rad/s at the step its
     // rotor's scalar part crossed 0). Below `tolerance` (1e-5 m) one pass is always taken, a Newton

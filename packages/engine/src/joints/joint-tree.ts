@@ -36,6 +36,16 @@ import type { JointSolver } from './joint-solver.js';
 /** Relative size below which a pivot of a node block counts as zero. */
 const PIVOT_TOLERANCE = 1e-12;
 
+/**
+ * A pivot of the block LDLᵀ whose size is below this fraction of the sizes it was computed from
+ * (|H_jj| + Σ |L_jq² d_q|: what cancelled) is not clearly nonzero, and the node falls back to the
+ * LU with complete pivoting (redundant rows, a locked plane).
+ */
+const LDL_TOLERANCE = 1e-8;
+
+/** `nSwap` of a node factored by the LDLᵀ (0 and 1: the LU, without and with swaps). */
+const LDL = 2;
+
 /** Joint roles in the forest. */
 const ROLE_GS = 0;
 const ROLE_NODE = 1;
@@ -52,6 +62,8 @@ export class JointTree {
   role = new Int32Array(16);
   /** Count of joints solved by the tree (nodes and folded). */
   treeJoints = 0;
+  /** Node factorisations that fell back from the LDLᵀ to the LU (a count that only grows). */
+  ldlFallbacks = 0;
 
   // union–find over solver slots
   private uf = new Int32Array(16);
@@ -69,7 +81,7 @@ export class JointTree {
   private nW = new Int32Array(16); // offset of W (s_i × s_parent)
   private nV = new Int32Array(16); // offset in the vectors
   private nPiv = new Int32Array(16); // offset of the pivots (2 s per node)
-  private nSwap = new Int32Array(16); // 1: the node's LU swapped rows or columns (else its solve skips the swaps)
+  private nSwap = new Int32Array(16); // LDL: the LDLᵀ; 1: the LU swapped rows or columns; 0: it swapped nothing
   private fold = new Int32Array(16); // body node: first folded joint, −1
   private foldNext = new Int32Array(16); // per joint: next folded joint of the same body
   private adjHead = new Int32Array(16); // body node: first incident joint node (as an edge id)
@@ -532,7 +544,12 @@ export class JointTree {
     for (let o = 0; o < this.nodeCount; o += 1) {
       const i = this.nOrder[o];
       const s = this.nSize[i];
-      this.nSwap[i] = this.luFactor(this.nD[i], s, this.nPiv[i]);
+      // A body's unknowns give positive pivots, its folded rows and a joint's rows negative ones.
+      this.nSwap[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs);
+      if (this.nSwap[i] !== LDL) {
+        this.ldlFallbacks += 1;
+        this.nSwap[i] = this.luFactor(this.nD[i], s, this.nPiv[i]);
+      }
       const p = this.nParent[i];
       if (p < 0) continue;
       const sp = this.nSize[p];
@@ -546,7 +563,10 @@ export class JointTree {
       const H = this.hblk;
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
       for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
-      this.luSolveColumns(this.nD[i], s, this.nPiv[i], w0, sp);
+      if (this.nSwap[i] === LDL) this.ldlSolveColumns(this.nD[i], s, w0, sp);
+      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], w0, sp);
+      // D_p −= H_ipᵀ W_i is symmetric: only its lower triangle (and diagonal) is updated, which is
+      // all the LDLᵀ reads (a fallback to the LU mirrors it first).
       const dp = this.nD[p];
       for (let q = 0; q < s; q += 1) {
         for (let r = 0; r < sp; r += 1) {
@@ -554,7 +574,7 @@ export class JointTree {
           if (h === 0) continue;
           const wq = w0 + q * sp;
           const dr = dp + r * sp;
-          for (let c = 0; c < sp; c += 1) mat[dr + c] -= h * mat[wq + c];
+          for (let c = 0; c <= r; c += 1) mat[dr + c] -= h * mat[wq + c];
         }
       }
     }
@@ -584,7 +604,8 @@ export class JointTree {
           vec[vp + c] -= sum;
         }
       }
-      this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0, this.nSwap[i]);
+      if (this.nSwap[i] === LDL) this.ldlSolve(this.nD[i], s, vec, v0);
+      else this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0, this.nSwap[i]);
     }
     for (let o = N - 1; o >= 0; o -= 1) {
       const i = this.nOrder[o];
@@ -734,6 +755,95 @@ export class JointTree {
       for (let d = 0; d < n; d += 1) dx[d] = vec[v0 + d];
       for (let p = 0; p < k; p += 1) dθ[p] = vec[v0 + n + p];
       js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
+    }
+  }
+
+  // ---- block LDLᵀ without pivoting, in place at mat[d0], s×s ----
+
+  /**
+   * The LDLᵀ of the symmetric block at d0 (its lower triangle and diagonal are read), left-looking
+   * (Crout): d_j on the diagonal, L_rj stored transposed in the upper triangle (at (j, r)), so the
+   * lower triangle keeps the block. The first `pos` pivots must be positive (a body's unknowns:
+   * M plus what its children add, positive definite) and the rest negative (joint rows: minus
+   * their Schur complement J D⁻¹ Jᵀ). Returns LDL, or −1 when a pivot has the wrong sign or is not
+   * clearly nonzero (LDL_TOLERANCE); the block is then restored, whole, for the LU.
+   */
+  private ldlFactor(d0: number, s: number, pos: number): number {
+    const A = this.mat;
+    const diag = this.col; // the block's diagonal, for a fallback
+    // A pivot is measured against what cancelled in it and against the block's largest diagonal
+    // entry (a first pivot of rounding noise in a block of size 10 is no pivot).
+    let big = 0;
+    for (let j = 0; j < s; j += 1) {
+      const a = Math.abs(A[d0 + j * s + j]);
+      if (a > big) big = a;
+    }
+    for (let j = 0; j < s; j += 1) {
+      const jj = d0 + j * s + j;
+      let d = A[jj];
+      let size = Math.abs(d) > big ? Math.abs(d) : big;
+      for (let q = 0; q < j; q += 1) {
+        const u = A[d0 + q * s + j];
+        const t = u * u * A[d0 + q * s + q];
+        d -= t;
+        size += Math.abs(t);
+      }
+      if (!(j < pos ? d > 0 : d < 0) || !(Math.abs(d) > size * LDL_TOLERANCE)) {
+        // Restore the diagonal and mirror the lower triangle (the block) into the upper.
+        for (let q = 0; q < j; q += 1) A[d0 + q * s + q] = diag[q];
+        for (let r = 1; r < s; r += 1) for (let c = 0; c < r; c += 1) A[d0 + c * s + r] = A[d0 + r * s + c];
+        return -1;
+      }
+      diag[j] = A[jj];
+      A[jj] = d;
+      for (let r = j + 1; r < s; r += 1) {
+        let sum = A[d0 + r * s + j];
+        for (let q = 0; q < j; q += 1) sum -= A[d0 + q * s + r] * A[d0 + q * s + j] * A[d0 + q * s + q];
+        A[d0 + j * s + r] = sum / d;
+      }
+    }
+    return LDL;
+  }
+
+  /** x ← D⁻¹ x for the LDLᵀ at d0 (x at v[v0 .. v0 + s)). */
+  private ldlSolve(d0: number, s: number, v: Float64Array, v0: number): void {
+    const A = this.mat;
+    // L y = b, column by column (L's column q is row q of the upper triangle).
+    for (let q = 0; q < s - 1; q += 1) {
+      const y = v[v0 + q];
+      if (y === 0) continue;
+      for (let r = q + 1; r < s; r += 1) v[v0 + r] -= A[d0 + q * s + r] * y;
+    }
+    // Lᵀ x = y / d, from the last row up.
+    for (let r = s - 1; r >= 0; r -= 1) {
+      let sum = v[v0 + r] / A[d0 + r * s + r];
+      for (let q = r + 1; q < s; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
+      v[v0 + r] = sum;
+    }
+  }
+
+  /** X ← D⁻¹ X for the LDLᵀ at d0, X the s × m block at mat[x0] (row-major). */
+  private ldlSolveColumns(d0: number, s: number, x0: number, m: number): void {
+    const A = this.mat;
+    for (let q = 0; q < s - 1; q += 1) {
+      const xq = x0 + q * m;
+      for (let r = q + 1; r < s; r += 1) {
+        const f = A[d0 + q * s + r];
+        if (f === 0) continue;
+        const xr = x0 + r * m;
+        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+      }
+    }
+    for (let r = s - 1; r >= 0; r -= 1) {
+      const xr = x0 + r * m;
+      const d = A[d0 + r * s + r];
+      for (let c = 0; c < m; c += 1) A[xr + c] = A[xr + c] / d;
+      for (let q = r + 1; q < s; q += 1) {
+        const f = A[d0 + r * s + q];
+        if (f === 0) continue;
+        const xq = x0 + q * m;
+        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+      }
     }
   }
 

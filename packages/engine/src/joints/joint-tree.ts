@@ -91,6 +91,8 @@ export class JointTree {
   private mat = new Float64Array(256);
   private vec = new Float64Array(64);
   private piv = new Int32Array(64);
+  /** 1 / d_j of the LDLᵀ nodes, at the node's offset in the vectors (the solves multiply). */
+  private rdiag = new Float64Array(64);
   private col: Float64Array;
   private hblk = new Float64Array(64);
   /** Size of the D blocks in `mat` (the W blocks follow). */
@@ -127,6 +129,9 @@ export class JointTree {
   build(js: JointSolver, sb: SolverBodies): number {
     const count = js.count;
     this.savedOk = 0;
+    // The forest depends only on what `shapeKey` records: when that is unchanged (every build of
+    // a step after the first, as a rule), the forest built last is this one.
+    if (this.shapeKey(js, sb) === 1) return this.treeJoints;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -261,7 +266,48 @@ export class JointTree {
     this.dSize = dOff;
     this.vec = growFloat64(this.vec, vOff, 0);
     this.piv = growInt32(this.piv, 2 * vOff, 0);
+    this.rdiag = growFloat64(this.rdiag, vOff, 0);
     return this.treeJoints;
+  }
+
+  /** The inputs of `build` at its last run: joint count, slot count, then per joint 3 numbers. */
+  private buildKey = new Int32Array(64);
+  private buildKeyOk = 0;
+
+  /**
+   * Records the inputs of `build` (per joint: soft, broken, which sides are dynamic, its block
+   * size, its two slots) and returns 1 when they equal those of the last build.
+   */
+  private shapeKey(js: JointSolver, sb: SolverBodies): number {
+    const count = js.count;
+    const len = 2 + 3 * count;
+    if (this.buildKey.length < len) {
+      this.buildKey = growInt32(this.buildKey, len, 0);
+      this.buildKeyOk = 0;
+    }
+    const key = this.buildKey;
+    let same = this.buildKeyOk === 1 && key[0] === count && key[1] === sb.count ? 1 : 0;
+    key[0] = count;
+    key[1] = sb.count;
+    const invMass = sb.invMass;
+    for (let j = 0, at = 2; j < count; j += 1, at += 3) {
+      const a = js.jA[j];
+      const b = js.jB[j];
+      const code =
+        (js.jSoft[j] !== 0 ? 1 : 0) +
+        (js.joints[j].brokenFlag ? 2 : 0) +
+        (a > 0 && invMass[a] > 0 ? 4 : 0) +
+        (b > 0 && invMass[b] > 0 ? 8 : 0) +
+        js.jBlock[j] * 16;
+      if (key[at] !== code || key[at + 1] !== a || key[at + 2] !== b) {
+        same = 0;
+        key[at] = code;
+        key[at + 1] = a;
+        key[at + 2] = b;
+      }
+    }
+    this.buildKeyOk = 1;
+    return same;
   }
 
   private find(i: number): number {
@@ -545,7 +591,7 @@ export class JointTree {
       const i = this.nOrder[o];
       const s = this.nSize[i];
       // A body's unknowns give positive pivots, its folded rows and a joint's rows negative ones.
-      this.nSwap[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs);
+      this.nSwap[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs, this.nV[i]);
       if (this.nSwap[i] !== LDL) {
         this.ldlFallbacks += 1;
         this.nSwap[i] = this.luFactor(this.nD[i], s, this.nPiv[i]);
@@ -563,7 +609,7 @@ export class JointTree {
       const H = this.hblk;
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
       for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
-      if (this.nSwap[i] === LDL) this.ldlSolveColumns(this.nD[i], s, w0, sp);
+      if (this.nSwap[i] === LDL) this.ldlSolveColumns(this.nD[i], s, w0, sp, this.nV[i]);
       else this.luSolveColumns(this.nD[i], s, this.nPiv[i], w0, sp);
       // D_p −= H_ipᵀ W_i is symmetric: only its lower triangle (and diagonal) is updated, which is
       // all the LDLᵀ reads (a fallback to the LU mirrors it first).
@@ -604,7 +650,7 @@ export class JointTree {
           vec[vp + c] -= sum;
         }
       }
-      if (this.nSwap[i] === LDL) this.ldlSolve(this.nD[i], s, vec, v0);
+      if (this.nSwap[i] === LDL) this.ldlSolve(this.nD[i], s, vec, v0, v0);
       else this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0, this.nSwap[i]);
     }
     for (let o = N - 1; o >= 0; o -= 1) {
@@ -768,8 +814,9 @@ export class JointTree {
    * their Schur complement J D⁻¹ Jᵀ). Returns LDL, or −1 when a pivot has the wrong sign or is not
    * clearly nonzero (LDL_TOLERANCE); the block is then restored, whole, for the LU.
    */
-  private ldlFactor(d0: number, s: number, pos: number): number {
+  private ldlFactor(d0: number, s: number, pos: number, r0: number): number {
     const A = this.mat;
+    const rd = this.rdiag;
     const diag = this.col; // the block's diagonal, for a fallback
     // A pivot is measured against what cancelled in it and against the block's largest diagonal
     // entry (a first pivot of rounding noise in a block of size 10 is no pivot).
@@ -796,6 +843,7 @@ export class JointTree {
       }
       diag[j] = A[jj];
       A[jj] = d;
+      rd[r0 + j] = 1 / d;
       for (let r = j + 1; r < s; r += 1) {
         let sum = A[d0 + r * s + j];
         for (let q = 0; q < j; q += 1) sum -= A[d0 + q * s + r] * A[d0 + q * s + j] * A[d0 + q * s + q];
@@ -805,9 +853,10 @@ export class JointTree {
     return LDL;
   }
 
-  /** x ← D⁻¹ x for the LDLᵀ at d0 (x at v[v0 .. v0 + s)). */
-  private ldlSolve(d0: number, s: number, v: Float64Array, v0: number): void {
+  /** x ← D⁻¹ x for the LDLᵀ at d0 (x at v[v0 .. v0 + s)); its 1 / d_j at rdiag[r0]. */
+  private ldlSolve(d0: number, s: number, v: Float64Array, v0: number, r0: number): void {
     const A = this.mat;
+    const rd = this.rdiag;
     // L y = b, column by column (L's column q is row q of the upper triangle).
     for (let q = 0; q < s - 1; q += 1) {
       const y = v[v0 + q];
@@ -816,15 +865,16 @@ export class JointTree {
     }
     // Lᵀ x = y / d, from the last row up.
     for (let r = s - 1; r >= 0; r -= 1) {
-      let sum = v[v0 + r] / A[d0 + r * s + r];
+      let sum = v[v0 + r] * rd[r0 + r];
       for (let q = r + 1; q < s; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
       v[v0 + r] = sum;
     }
   }
 
-  /** X ← D⁻¹ X for the LDLᵀ at d0, X the s × m block at mat[x0] (row-major). */
-  private ldlSolveColumns(d0: number, s: number, x0: number, m: number): void {
+  /** X ← D⁻¹ X for the LDLᵀ at d0, X the s × m block at mat[x0] (row-major); its 1 / d_j at rdiag[r0]. */
+  private ldlSolveColumns(d0: number, s: number, x0: number, m: number, r0: number): void {
     const A = this.mat;
+    const rd = this.rdiag;
     for (let q = 0; q < s - 1; q += 1) {
       const xq = x0 + q * m;
       for (let r = q + 1; r < s; r += 1) {
@@ -836,8 +886,8 @@ export class JointTree {
     }
     for (let r = s - 1; r >= 0; r -= 1) {
       const xr = x0 + r * m;
-      const d = A[d0 + r * s + r];
-      for (let c = 0; c < m; c += 1) A[xr + c] = A[xr + c] / d;
+      const d = rd[r0 + r];
+      for (let c = 0; c < m; c += 1) A[xr + c] *= d;
       for (let q = r + 1; q < s; q += 1) {
         const f = A[d0 + r * s + q];
         if (f === 0) continue;

@@ -3,7 +3,7 @@
  *
  * The tree factors each node's block by an LDLᵀ without pivoting (body blocks positive definite,
  * joint blocks negative definite) and falls back to the LU with complete pivoting where a pivot
- * has the wrong sign or is not clearly nonzero (docs/joints.md, "The tree's factorisation"). These
+ * has the wrong sign or is not clearly nonzero (docs/joints.md, "The blocks' factorisation"). These
  * scenes have redundant rows, so some blocks are singular and take the fallback; the rows must
  * still be met to rounding, the bodies must stay finite, and two runs must give the same bits.
  *

@@ -17,8 +17,11 @@
  * - A joint to the world (or to a static or kinematic body) is no node: its rows are folded into
  *   its body's node as extra rows of a KKT block [M Jᵀ; J 0], so joint nodes always have two body
  *   neighbours and the root is a body; every block D is then invertible when the rows are
- *   independent. Blocks are factored by Gaussian elimination with complete pivoting; a pivot below
- *   a relative 1e-12 drops its row (redundant rows, e.g. two welds to the world on one body).
+ *   independent. A body's block is positive definite and a joint's (minus its Schur complement)
+ *   negative definite, so blocks are factored by an LDLᵀ without pivoting; where a pivot has the
+ *   wrong sign or is not clearly nonzero (LDL_TOLERANCE) the node falls back to Gaussian
+ *   elimination with complete pivoting, where a pivot below a relative 1e-12 drops its row
+ *   (redundant rows, e.g. two welds to the world on one body, or the grid's pinned row).
  * - A rigid joint that would close a cycle (the joint grid) and every soft joint stay with the
  *   Gauss–Seidel solver; the rest of the forest is still solved directly.
  * - Only the equality rows take part; limits, ropes, struts and motors are solved by the
@@ -37,14 +40,11 @@ import type { JointSolver } from './joint-solver.js';
 const PIVOT_TOLERANCE = 1e-12;
 
 /**
- * A pivot of the block LDLᵀ whose size is below this fraction of the sizes it was computed from
- * (|H_jj| + Σ |L_jq² d_q|: what cancelled) is not clearly nonzero, and the node falls back to the
- * LU with complete pivoting (redundant rows, a locked plane).
+ * A pivot of the block LDLᵀ whose size is at most this fraction of the block's largest diagonal
+ * entry plus the terms that cancelled in it (max|D_ii| + Σ |L_jq² d_q|) is not clearly nonzero,
+ * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane).
  */
 const LDL_TOLERANCE = 1e-8;
-
-/** `nSwap` of a node factored by the LDLᵀ (0 and 1: the LU, without and with swaps). */
-const LDL = 2;
 
 /** Joint roles in the forest. */
 const ROLE_GS = 0;
@@ -62,8 +62,6 @@ export class JointTree {
   role = new Int32Array(16);
   /** Count of joints solved by the tree (nodes and folded). */
   treeJoints = 0;
-  /** Node factorisations that fell back from the LDLᵀ to the LU (a count that only grows). */
-  ldlFallbacks = 0;
 
   // union–find over solver slots
   private uf = new Int32Array(16);
@@ -81,7 +79,7 @@ export class JointTree {
   private nW = new Int32Array(16); // offset of W (s_i × s_parent)
   private nV = new Int32Array(16); // offset in the vectors
   private nPiv = new Int32Array(16); // offset of the pivots (2 s per node)
-  private nSwap = new Int32Array(16); // LDL: the LDLᵀ; 1: the LU swapped rows or columns; 0: it swapped nothing
+  private nLdl = new Int32Array(16); // 1: the node's block is factored by the LDLᵀ; 0: by the LU
   private fold = new Int32Array(16); // body node: first folded joint, −1
   private foldNext = new Int32Array(16); // per joint: next folded joint of the same body
   private adjHead = new Int32Array(16); // body node: first incident joint node (as an edge id)
@@ -102,17 +100,17 @@ export class JointTree {
   /** 1 while `saved` belongs to the current factorisation. */
   private savedOk = 0;
   /**
-   * What the last `factor` factored: the assembled D blocks (before their LU), the Jacobians of
-   * the joint nodes' rows and the forest's shape. A `factor` whose input is the same, bit for bit,
+   * What the last `factor` factored: the assembled D blocks (before their factorisation) and the
+   * Jacobians of the joint nodes' rows, for the forest `build` last built (a build that builds
+   * anew clears `lastOk`). A `factor` whose input is the same, bit for bit,
    * keeps the factorisation (the velocity projection's, at the end of a sub-step, is the next
    * prepare's when nothing moved in between: the same poses, inertia and impulses).
    */
   private inD = new Float64Array(64);
   private lastD = new Float64Array(64);
   private lastJ = new Float64Array(64);
-  private lastShape = new Int32Array(64);
   private lastSize = -1;
-  /** 1 while `mat` holds the factorisation of the last input (`lastD`, `lastJ`, `lastShape`). */
+  /** 1 while `mat` holds the factorisation of the last input (`lastD`, `lastJ`) on this forest. */
   private lastOk = 0;
 
   constructor(D: Dims) {
@@ -132,6 +130,8 @@ export class JointTree {
     // The forest depends only on what `shapeKey` records: when that is unchanged (every build of
     // a step after the first, as a rule), the forest built last is this one.
     if (this.shapeKey(js, sb) === 1) return this.treeJoints;
+    // A new forest: the factorisation `mat` holds is not of it (see `sameInput`).
+    this.lastOk = 0;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -340,7 +340,7 @@ export class JointTree {
     this.nW = growInt32(this.nW, need);
     this.nV = growInt32(this.nV, need);
     this.nPiv = growInt32(this.nPiv, need);
-    this.nSwap = growInt32(this.nSwap, need);
+    this.nLdl = growInt32(this.nLdl, need);
     this.fold = growInt32(this.fold, need);
     this.adjHead = growInt32(this.adjHead, need);
   }
@@ -348,25 +348,9 @@ export class JointTree {
   // ---- the blocks of H ----
 
   /**
-   * Entry (r, c) of the coupling block between joint node `jn`'s rows and body node `bn`'s
-   * columns: the Jacobian of row r for that body (+[d, J_B] for b, −[d, J_A] for a; 0 in the
-   * folded columns).
-   */
-  private coupling(js: JointSolver, j: number, slot: number, r: number, c: number): number {
-    const n = this.n;
-    if (c >= this.bs) return 0;
-    const base = (js.jFirst[j] + r) * js.RS;
-    const rows = js.rows;
-    const isB = js.jB[j] === slot;
-    const s = isB ? 1 : -1;
-    if (c < n) return s * rows[base + c];
-    return s * rows[base + (isB ? js.OFF_JB : js.OFF_JA) + (c - n)];
-  }
-
-  /**
    * The whole coupling block between joint j's rows and the body in `slot` into H (s × sp,
-   * row-major): the entries of `coupling`, written out (the same numbers, without a call and a
-   * branch per entry). `jointIsChild` 1: rows are the joint's rows and columns the body's
+   * row-major): the Jacobian of each row for that body (+[d, J_B] for b, −[d, J_A] for a; 0 in
+   * the folded columns). `jointIsChild` 1: rows are the joint's rows and columns the body's
    * unknowns (s = the joint's rows); 0: the transpose (rows the body's unknowns).
    */
   private couplingBlock(
@@ -458,9 +442,12 @@ export class JointTree {
       let row = bs;
       for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
         const m2 = js.jBlock[j];
+        if (this.hblk.length < m2 * bs) this.hblk = growFloat64(this.hblk, m2 * bs, 0);
+        const H = this.hblk;
+        this.couplingBlock(js, j, slot, 1, m2, bs, H);
         for (let r = 0; r < m2; r += 1) {
           for (let c = 0; c < bs; c += 1) {
-            const v = this.coupling(js, j, slot, r, c);
+            const v = H[r * bs + c];
             mat[d0 + (row + r) * s + c] = v;
             mat[d0 + c * s + row + r] = v;
           }
@@ -471,8 +458,8 @@ export class JointTree {
   }
 
   /**
-   * Assembles the D blocks into `inD` and returns 1 when they, the Jacobians of the joint nodes'
-   * rows and the forest's shape are those of the factorisation `mat` holds (nothing to do);
+   * Assembles the D blocks into `inD` and returns 1 when they and the Jacobians of the joint nodes'
+   * rows are those of the factorisation `mat` holds, on the same forest (nothing to do);
    * otherwise copies the blocks into `mat`, records the input and returns 0.
    */
   private sameInput(js: JointSolver, sb: SolverBodies): number {
@@ -481,31 +468,12 @@ export class JointTree {
     if (this.inD.length < dSize) this.inD = growFloat64(this.inD, dSize, 0);
     const inD = this.inD;
     this.assemble(js, sb, inD);
-    // The joint nodes' Jacobians (with the sides: the sign of a coupling) and the shape.
+    // The joint nodes' Jacobians (their sides, the sign of a coupling, are the forest's).
     const RS = js.RS;
     const width = this.n + 2 * this.k;
     let jLen = 0;
     for (let i = 0; i < N; i += 1) if (this.nKind[i] === 1) jLen += this.nSize[i] * width;
-    const shapeLen = 1 + 6 * N;
-    let same = this.lastOk === 1 && this.lastSize === dSize ? 1 : 0;
-    if (same === 1 && (this.lastJ.length < jLen || this.lastShape.length < shapeLen)) same = 0;
-    const shape = this.lastShape;
-    if (same === 1) {
-      if (shape[0] !== N) same = 0;
-      for (let i = 0, at = 1; i < N && same === 1; i += 1, at += 6) {
-        const j = this.nRef[i];
-        const kind = this.nKind[i];
-        if (
-          shape[at] !== kind ||
-          shape[at + 1] !== j ||
-          shape[at + 2] !== this.nParent[i] ||
-          shape[at + 3] !== this.nSize[i] ||
-          shape[at + 4] !== this.nOrder[i] ||
-          shape[at + 5] !== (kind === 1 ? js.jA[j] * 65536 + js.jB[j] : 0)
-        )
-          same = 0;
-      }
-    }
+    let same = this.lastOk === 1 && this.lastSize === dSize && this.lastJ.length >= jLen ? 1 : 0;
     if (same === 1) {
       const lastD = this.lastD;
       for (let q = 0; q < dSize; q += 1) {
@@ -542,22 +510,11 @@ export class JointTree {
       lastD[q] = inD[q];
     }
     if (this.lastJ.length < jLen) this.lastJ = growFloat64(this.lastJ, jLen, 0);
-    if (this.lastShape.length < shapeLen) this.lastShape = growInt32(this.lastShape, shapeLen, 0);
     const lastJ = this.lastJ;
-    const out = this.lastShape;
     const rows = js.rows;
-    out[0] = N;
-    for (let i = 0, at = 1, jAt = 0; i < N; i += 1, at += 6) {
-      const j = this.nRef[i];
-      const kind = this.nKind[i];
-      out[at] = kind;
-      out[at + 1] = j;
-      out[at + 2] = this.nParent[i];
-      out[at + 3] = this.nSize[i];
-      out[at + 4] = this.nOrder[i];
-      out[at + 5] = kind === 1 ? js.jA[j] * 65536 + js.jB[j] : 0;
-      if (kind !== 1) continue;
-      const first = js.jFirst[j];
+    for (let i = 0, jAt = 0; i < N; i += 1) {
+      if (this.nKind[i] !== 1) continue;
+      const first = js.jFirst[this.nRef[i]];
       for (let r = 0; r < this.nSize[i]; r += 1) {
         const base = (first + r) * RS;
         for (let c = 0; c < width; c += 1) lastJ[jAt++] = rows[base + c];
@@ -591,11 +548,8 @@ export class JointTree {
       const i = this.nOrder[o];
       const s = this.nSize[i];
       // A body's unknowns give positive pivots, its folded rows and a joint's rows negative ones.
-      this.nSwap[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs, this.nV[i]);
-      if (this.nSwap[i] !== LDL) {
-        this.ldlFallbacks += 1;
-        this.nSwap[i] = this.luFactor(this.nD[i], s, this.nPiv[i]);
-      }
+      this.nLdl[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs, this.nV[i]);
+      if (this.nLdl[i] === 0) this.luFactor(this.nD[i], s, this.nPiv[i]);
       const p = this.nParent[i];
       if (p < 0) continue;
       const sp = this.nSize[p];
@@ -609,8 +563,8 @@ export class JointTree {
       const H = this.hblk;
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
       for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
-      if (this.nSwap[i] === LDL) this.ldlSolveColumns(this.nD[i], s, w0, sp, this.nV[i]);
-      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], w0, sp);
+      if (this.nLdl[i] === 1) this.ldlSolveColumns(this.nD[i], s, mat, w0, sp, this.nV[i]);
+      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], mat, w0, sp);
       // D_p −= H_ipᵀ W_i is symmetric: only its lower triangle (and diagonal) is updated, which is
       // all the LDLᵀ reads (a fallback to the LU mirrors it first).
       const dp = this.nD[p];
@@ -650,8 +604,8 @@ export class JointTree {
           vec[vp + c] -= sum;
         }
       }
-      if (this.nSwap[i] === LDL) this.ldlSolve(this.nD[i], s, vec, v0, v0);
-      else this.luSolve(this.nD[i], s, this.nPiv[i], vec, v0, this.nSwap[i]);
+      if (this.nLdl[i] === 1) this.ldlSolveColumns(this.nD[i], s, vec, v0, 1, v0);
+      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], vec, v0, 1);
     }
     for (let o = N - 1; o >= 0; o -= 1) {
       const i = this.nOrder[o];
@@ -808,71 +762,49 @@ export class JointTree {
 
   /**
    * The LDLᵀ of the symmetric block at d0 (its lower triangle and diagonal are read), left-looking
-   * (Crout): d_j on the diagonal, L_rj stored transposed in the upper triangle (at (j, r)), so the
-   * lower triangle keeps the block. The first `pos` pivots must be positive (a body's unknowns:
+   * (Crout): 1 / d_j in `rdiag`, L_rj stored transposed in the upper triangle (at (j, r)), so the
+   * lower triangle and the diagonal keep the block. The first `pos` pivots must be positive (a body's unknowns:
    * M plus what its children add, positive definite) and the rest negative (joint rows: minus
-   * their Schur complement J D⁻¹ Jᵀ). Returns LDL, or −1 when a pivot has the wrong sign or is not
-   * clearly nonzero (LDL_TOLERANCE); the block is then restored, whole, for the LU.
+   * their Schur complement J D⁻¹ Jᵀ). Returns 1, or 0 when a pivot has the wrong sign or is not
+   * clearly nonzero (LDL_TOLERANCE); the block, mirrored into the upper triangle, is then whole for the LU.
    */
   private ldlFactor(d0: number, s: number, pos: number, r0: number): number {
     const A = this.mat;
-    const rd = this.rdiag;
-    const diag = this.col; // the block's diagonal, for a fallback
+    const rd = this.rdiag; // d_j while factoring, 1 / d_j once done
     // A pivot is measured against what cancelled in it and against the block's largest diagonal
     // entry (a first pivot of rounding noise in a block of size 10 is no pivot).
     let big = 0;
+    for (let j = 0; j < s; j += 1) big = Math.max(big, Math.abs(A[d0 + j * s + j]));
     for (let j = 0; j < s; j += 1) {
-      const a = Math.abs(A[d0 + j * s + j]);
-      if (a > big) big = a;
-    }
-    for (let j = 0; j < s; j += 1) {
-      const jj = d0 + j * s + j;
-      let d = A[jj];
-      let size = Math.abs(d) > big ? Math.abs(d) : big;
+      let d = A[d0 + j * s + j];
+      let size = big;
       for (let q = 0; q < j; q += 1) {
         const u = A[d0 + q * s + j];
-        const t = u * u * A[d0 + q * s + q];
+        const t = u * u * rd[r0 + q];
         d -= t;
         size += Math.abs(t);
       }
       if (!(j < pos ? d > 0 : d < 0) || !(Math.abs(d) > size * LDL_TOLERANCE)) {
-        // Restore the diagonal and mirror the lower triangle (the block) into the upper.
-        for (let q = 0; q < j; q += 1) A[d0 + q * s + q] = diag[q];
+        // The lower triangle and the diagonal still hold the block: mirror it into the upper.
         for (let r = 1; r < s; r += 1) for (let c = 0; c < r; c += 1) A[d0 + c * s + r] = A[d0 + r * s + c];
-        return -1;
+        return 0;
       }
-      diag[j] = A[jj];
-      A[jj] = d;
-      rd[r0 + j] = 1 / d;
+      rd[r0 + j] = d;
       for (let r = j + 1; r < s; r += 1) {
         let sum = A[d0 + r * s + j];
-        for (let q = 0; q < j; q += 1) sum -= A[d0 + q * s + r] * A[d0 + q * s + j] * A[d0 + q * s + q];
+        for (let q = 0; q < j; q += 1) sum -= A[d0 + q * s + r] * A[d0 + q * s + j] * rd[r0 + q];
         A[d0 + j * s + r] = sum / d;
       }
     }
-    return LDL;
+    for (let j = 0; j < s; j += 1) rd[r0 + j] = 1 / rd[r0 + j];
+    return 1;
   }
 
-  /** x ← D⁻¹ x for the LDLᵀ at d0 (x at v[v0 .. v0 + s)); its 1 / d_j at rdiag[r0]. */
-  private ldlSolve(d0: number, s: number, v: Float64Array, v0: number, r0: number): void {
-    const A = this.mat;
-    const rd = this.rdiag;
-    // L y = b, column by column (L's column q is row q of the upper triangle).
-    for (let q = 0; q < s - 1; q += 1) {
-      const y = v[v0 + q];
-      if (y === 0) continue;
-      for (let r = q + 1; r < s; r += 1) v[v0 + r] -= A[d0 + q * s + r] * y;
-    }
-    // Lᵀ x = y / d, from the last row up.
-    for (let r = s - 1; r >= 0; r -= 1) {
-      let sum = v[v0 + r] * rd[r0 + r];
-      for (let q = r + 1; q < s; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
-      v[v0 + r] = sum;
-    }
-  }
-
-  /** X ← D⁻¹ X for the LDLᵀ at d0, X the s × m block at mat[x0] (row-major); its 1 / d_j at rdiag[r0]. */
-  private ldlSolveColumns(d0: number, s: number, x0: number, m: number, r0: number): void {
+  /**
+   * X ← D⁻¹ X for the LDLᵀ at d0, X the s × m block at X[x0] (row-major; m = 1: a vector); its
+   * 1 / d_j at rdiag[r0].
+   */
+  private ldlSolveColumns(d0: number, s: number, X: Float64Array, x0: number, m: number, r0: number): void {
     const A = this.mat;
     const rd = this.rdiag;
     for (let q = 0; q < s - 1; q += 1) {
@@ -881,29 +813,27 @@ export class JointTree {
         const f = A[d0 + q * s + r];
         if (f === 0) continue;
         const xr = x0 + r * m;
-        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+        for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];
       }
     }
     for (let r = s - 1; r >= 0; r -= 1) {
       const xr = x0 + r * m;
       const d = rd[r0 + r];
-      for (let c = 0; c < m; c += 1) A[xr + c] *= d;
+      for (let c = 0; c < m; c += 1) X[xr + c] *= d;
       for (let q = r + 1; q < s; q += 1) {
         const f = A[d0 + r * s + q];
         if (f === 0) continue;
         const xq = x0 + q * m;
-        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+        for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];
       }
     }
   }
 
   // ---- dense LU with complete pivoting, in place at mat[d0], s×s; pivots at piv[p0] (rows, cols) ----
 
-  /** Returns 1 if a row or a column was swapped, else 0 (then the pivots are the identity). */
-  private luFactor(d0: number, s: number, p0: number): number {
+  private luFactor(d0: number, s: number, p0: number): void {
     const A = this.mat;
     const piv = this.piv;
-    let swapped = 0;
     // The tolerance is relative to the largest entry, which the first column's search finds (it
     // scans the whole block): set there, not by a scan of its own.
     let tol = 0;
@@ -925,7 +855,6 @@ export class JointTree {
       if (c === 0) tol = (best > 0 ? best : 0) * PIVOT_TOLERANCE;
       piv[p0 + c] = br;
       piv[p0 + s + c] = bc;
-      if (br !== c || bc !== c) swapped = 1;
       if (br !== c) {
         for (let q = 0; q < s; q += 1) {
           const t = A[d0 + c * s + q];
@@ -948,7 +877,7 @@ export class JointTree {
           piv[p0 + r] = r;
           piv[p0 + s + r] = r;
         }
-        return swapped;
+        return;
       }
       for (let r = c + 1; r < s; r += 1) {
         const f = A[d0 + r * s + c] / pv;
@@ -957,15 +886,13 @@ export class JointTree {
         for (let q = c + 1; q < s; q += 1) A[d0 + r * s + q] -= f * A[d0 + c * s + q];
       }
     }
-    return swapped;
   }
 
   /**
-   * X ← D⁻¹ X for the LU at d0, X the s × m block at mat[x0] (row-major): `luSolve` on each column
-   * at once, each column through the same operations in the same order (so the same numbers), with
-   * the row swaps, the loops and the pivots read once for all the columns.
+   * X ← D⁻¹ X for the LU at d0, X the s × m block at X[x0] (row-major; m = 1: a vector); dropped
+   * unknowns get 0.
    */
-  private luSolveColumns(d0: number, s: number, p0: number, x0: number, m: number): void {
+  private luSolveColumns(d0: number, s: number, p0: number, X: Float64Array, x0: number, m: number): void {
     const A = this.mat;
     const piv = this.piv;
     for (let c = 0; c < s; c += 1) {
@@ -974,9 +901,9 @@ export class JointTree {
         const xc = x0 + c * m;
         const xr = x0 + r * m;
         for (let q = 0; q < m; q += 1) {
-          const t = A[xc + q];
-          A[xc + q] = A[xr + q];
-          A[xr + q] = t;
+          const t = X[xc + q];
+          X[xc + q] = X[xr + q];
+          X[xr + q] = t;
         }
       }
     }
@@ -986,7 +913,7 @@ export class JointTree {
       for (let q = 0; q < r; q += 1) {
         const f = A[d0 + r * s + q];
         const xq = x0 + q * m;
-        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+        for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];
       }
     }
     // U x = y.
@@ -994,15 +921,15 @@ export class JointTree {
       const d = A[d0 + r * s + r];
       const xr = x0 + r * m;
       if (d === 0) {
-        for (let c = 0; c < m; c += 1) A[xr + c] = 0;
+        for (let c = 0; c < m; c += 1) X[xr + c] = 0;
         continue;
       }
       for (let q = r + 1; q < s; q += 1) {
         const f = A[d0 + r * s + q];
         const xq = x0 + q * m;
-        for (let c = 0; c < m; c += 1) A[xr + c] -= f * A[xq + c];
+        for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];
       }
-      for (let c = 0; c < m; c += 1) A[xr + c] = A[xr + c] / d;
+      for (let c = 0; c < m; c += 1) X[xr + c] = X[xr + c] / d;
     }
     // Column swaps, undone in reverse.
     for (let c = s - 1; c >= 0; c -= 1) {
@@ -1011,54 +938,10 @@ export class JointTree {
         const xc = x0 + c * m;
         const xq = x0 + q * m;
         for (let k = 0; k < m; k += 1) {
-          const t = A[xc + k];
-          A[xc + k] = A[xq + k];
-          A[xq + k] = t;
+          const t = X[xc + k];
+          X[xc + k] = X[xq + k];
+          X[xq + k] = t;
         }
-      }
-    }
-  }
-
-  /**
-   * x ← D⁻¹ x for the LU at d0 (x at v[v0 .. v0 + s)); dropped unknowns get 0. `swapped` 0 (from
-   * `luFactor`): the pivots are the identity, and the swap loops are skipped.
-   */
-  private luSolve(d0: number, s: number, p0: number, v: Float64Array, v0: number, swapped: number): void {
-    const A = this.mat;
-    const piv = this.piv;
-    // Row swaps.
-    for (let c = 0; c < s && swapped === 1; c += 1) {
-      const r = piv[p0 + c];
-      if (r !== c) {
-        const t = v[v0 + c];
-        v[v0 + c] = v[v0 + r];
-        v[v0 + r] = t;
-      }
-    }
-    // L y = b (unit lower).
-    for (let r = 1; r < s; r += 1) {
-      let sum = v[v0 + r];
-      for (let q = 0; q < r; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
-      v[v0 + r] = sum;
-    }
-    // U x = y.
-    for (let r = s - 1; r >= 0; r -= 1) {
-      const d = A[d0 + r * s + r];
-      if (d === 0) {
-        v[v0 + r] = 0;
-        continue;
-      }
-      let sum = v[v0 + r];
-      for (let q = r + 1; q < s; q += 1) sum -= A[d0 + r * s + q] * v[v0 + q];
-      v[v0 + r] = sum / d;
-    }
-    // Column swaps, undone in reverse.
-    for (let c = s - 1; c >= 0 && swapped === 1; c -= 1) {
-      const q = piv[p0 + s + c];
-      if (q !== c) {
-        const t = v[v0 + c];
-        v[v0 + c] = v[v0 + q];
-        v[v0 + q] = t;
       }
     }
   }

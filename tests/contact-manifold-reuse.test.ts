@@ -5,6 +5,7 @@
  * n = 2..6 for the cache; a box stack and a stack of convex-mesh cubes on a box in 3D and 4D.
  */
 import { describe, expect, it } from 'vitest';
+import { rotorFromPlane } from '@physin/algebra';
 import { Body, ConvexMesh, HyperBox } from '@physin/engine';
 import type { World } from '@physin/engine';
 import { collide as collideShapes } from '../packages/engine/src/collision/collide.js';
@@ -245,6 +246,46 @@ describe('manifold reuse in the world', () => {
       top!.setPositionN(x);
       run(world, 90);
       expect(top!.x[1]!).toBeLessThan(HALF + 0.1); // fell off, down to the ground
+    });
+  }
+});
+
+describe('a box pair passed on its kept separation (manifold-cache.ts, storeApart)', () => {
+  for (const n of [2, 3, 4]) {
+    it(`n = ${n}: is apart: the narrowphase at that moment finds no point (a heap of boxes, 240 steps)`, () => {
+      const world = makeWorld(n);
+      addGround(world, { friction: 0.5 });
+      const rand = seeded(7 + n);
+      for (let i = 0; i < 40; i += 1) {
+        const p = Array.from({ length: n }, () => 0.3 * (rand() - 0.5));
+        p[0] = (i % 4) * 1.1 + 0.3 * rand();
+        p[1] = 0.7 + Math.floor(i / 4) * 1.2;
+        // turned in the plane of axes 0 and n − 1 (yawed for n >= 3): near pairs apart on a slant
+        const D = world.D;
+        const rotor = rotorFromPlane(D, new Float64Array(D.r), 0, n - 1, 3 * rand());
+        const shape = HyperBox(D, new Array<number>(n).fill(0.3 + 0.2 * rand()));
+        world.addBody(new Body(D, { shape, mass: 1, position: p, rotor, material: { friction: 0.5 } }));
+      }
+      const set = contactsOf(world);
+      const cache = (set as unknown as { cache: ManifoldCache }).cache;
+      const check = cache.check.bind(cache);
+      const fresh = createManifold(n, maxManifoldPoints(n));
+      const scratch = createNarrowphaseScratch(n);
+      let kept = 0;
+      let found = 0;
+      cache.check = (slot, poseA, poseB, numbers) => {
+        const reused = check(slot, poseA, poseB, numbers);
+        if (cache.apart) {
+          kept += 1;
+          const [a, b] = [set.shapeA[slot], set.shapeB[slot]] as unknown as CollidableShape[];
+          collideShapes(fresh, n, a!, poseA, b!, poseB, numbers[3]!, scratch);
+          if (fresh.count > 0) found += 1;
+        }
+        return reused;
+      };
+      run(world, 240);
+      expect(found).toBe(0);
+      expect(kept).toBeGreaterThan(100);
     });
   }
 });

@@ -207,6 +207,7 @@ export function boxBoxSatGeneralKernel(
     if (s > margin) {
       sat.kind = SAT_SEPARATED;
       sat.separation = s;
+      sat.axis = i;
       return false;
     }
     if (s > sepA) {
@@ -228,6 +229,7 @@ export function boxBoxSatGeneralKernel(
     if (s > margin) {
       sat.kind = SAT_SEPARATED;
       sat.separation = s;
+      sat.axis = n + j;
       return false;
     }
     if (s > sepB) {
@@ -246,6 +248,7 @@ export function boxBoxSatGeneralKernel(
     if (s > margin) {
       sat.kind = SAT_SEPARATED;
       sat.separation = s;
+      sat.axis = -1;
       return false;
     }
     if (s > sepE) {

@@ -72,6 +72,7 @@ export function boxBoxSat3Kernel(
     if (s > margin) {
       sat.kind = SAT_SEPARATED;
       sat.separation = s;
+      sat.axis = i;
       return false;
     }
     if (s > sepA) {
@@ -88,6 +89,7 @@ export function boxBoxSat3Kernel(
     if (s > margin) {
       sat.kind = SAT_SEPARATED;
       sat.separation = s;
+      sat.axis = 3 + j;
       return false;
     }
     if (s > sepB) {
@@ -142,6 +144,7 @@ export function boxBoxSat3Kernel(
       if (s > margin) {
         sat.kind = SAT_SEPARATED;
         sat.separation = s;
+        sat.axis = -1;
         return false;
       }
       if (s > sepE) {

@@ -84,7 +84,10 @@ export interface SatResult {
   kind: number;
   /** Separation along the chosen axis (m); > margin when kind is SAT_SEPARATED. */
   separation: number;
-  /** Face kinds: the box axis of the face. */
+  /**
+   * Face kinds: the box axis of the face. SAT_SEPARATED from the box–box tests: the separating
+   * face's axis, i for A's face i, n + j for B's face j, −1 for a mixed axis.
+   */
   axis: number;
   /** Edge kind: bitmask of A's axes spanning the normal's orthogonal complement (p bits). */
   maskA: number;

@@ -18,7 +18,7 @@ import { collideScratch } from '../collision/collide.js';
 import type { Manifold } from '../collision/manifold.js';
 import type { Pose } from '../collision/manifold.js';
 import { createManifold, createPose, manifoldBytes, manifoldIn, maxManifoldPoints } from '../collision/manifold.js';
-import { NARROWPHASE_MARGIN } from '../collision/narrowphase-scratch.js';
+import { NARROWPHASE_MARGIN, SAT_EDGE } from '../collision/narrowphase-scratch.js';
 import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
@@ -273,8 +273,11 @@ export class ContactSet {
   private readonly newMatched: Uint8Array;
   /** Box–box manifolds kept while the two boxes hardly move relative to each other. */
   private readonly cache: ManifoldCache;
-  /** [the reuse tolerance, the radius of the pair's second box] (arrays: no boxed doubles). */
-  private readonly reuseNumbers = new Float64Array(2);
+  /**
+   * [the reuse tolerance, the radii of the pair's second and first bodies, the pair's margin]
+   * (arrays: no boxed doubles).
+   */
+  private readonly reuseNumbers = new Float64Array(4);
 
   /**
    * `cache` builds the manifold cache (n, points per slot): the root entry's worlds give one with
@@ -879,11 +882,22 @@ export class ContactSet {
         // ρ_B: the body's bounding radius, kept since it was built (for a compound's part, the
         // whole body's: larger than the part's own, so the check errs toward a fresh manifold)
         reuseNumbers[1] = B.boundingRadius;
-        if (this.cache.check(slot, pA, pB, reuseNumbers)) {
-          this.cache.reuse(slot, m, pA, pB);
+        reuseNumbers[2] = A.boundingRadius;
+        reuseNumbers[3] = pairMargin;
+        const cache = this.cache;
+        if (cache.check(slot, pA, pB, reuseNumbers)) {
+          cache.reuse(slot, m, pA, pB);
           let touching = false;
           for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
           this.flags[slot] = flags | (m.count > 0 ? CONTACT_ACTIVE : 0) | (touching ? CONTACT_TOUCHING : 0);
+          continue;
+        }
+        if (cache.apart) {
+          // Two boxes still apart by the separation the narrowphase last found (most near pairs
+          // of a resting pile): it would give the same empty manifold; the rest is what the
+          // narrowphase path does with one (m.count is 0 since).
+          this.clearPatch(slot);
+          this.flags[slot] = flags;
           continue;
         }
       }
@@ -898,6 +912,8 @@ export class ContactSet {
         for (let c = 0; c < n; c += 1) oldPoints[p * n + c] = m.points[p * n + c];
       }
       scratch.scalars[NARROWPHASE_MARGIN] = pairMargin; // through the scratch: no boxed double
+      // (a collider other than the box–box tests leaves it so: no separation kept)
+      scratch.sat.kind = SAT_EDGE;
       collideScratch(m, n, sA as never, pA, sB as never, pB, scratch);
       // A pose at the edge of overflow can give a manifold of NaN: drop it rather than let it
       // carry non-finite impulses into the other body (the world then names the culprit).
@@ -907,8 +923,10 @@ export class ContactSet {
       if (finite !== 0) m.count = 0;
       // (Not reusable, e.g. the tolerance set to 0 for a while: forget, so that a later reuse
       // never pairs this manifold's ids with points cached before it.)
-      if (reusable) this.cache.store(slot, m, pA, pB);
-      else this.cache.forget(slot);
+      if (reusable) {
+        if (m.count === 0 && sA.kind === 'box' && sB.kind === 'box') this.cache.storeApart(slot, scratch.sat);
+        else this.cache.store(slot, m, pA, pB);
+      } else this.cache.forget(slot);
       if (sensor) {
         // A sensor's slot tells overlap alone: no impulses, no friction patch, no sweep.
         let overlap = false;

@@ -25,14 +25,24 @@
  */
 import type { Manifold, Pose } from '../collision/manifold.js';
 import { pointToLocal } from '../collision/manifold.js';
+import { SAT_SEPARATED } from '../collision/narrowphase-scratch.js';
+import type { SatResult } from '../collision/narrowphase-scratch.js';
 import { growFloat64 } from './grow.js';
+
+/** ManifoldCache.valid: the slot keeps a box pair's separation (storeApart). */
+const APART = 2;
 
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
 export class ManifoldCache {
   protected readonly n: number;
   protected readonly P: number;
-  /** 1 where the slot holds a cached manifold. */
+  /**
+   * Per slot: 1 when it holds a cached manifold; APART when it holds a box pair's separation
+   * instead (see {@link ManifoldCache.storeApart}); 0 when nothing.
+   */
   private valid = new Uint8Array(16);
+  /** Whether the last {@link ManifoldCache.check} found the pair still apart by its kept separation. */
+  apart = false;
   /**
    * Per slot, side by side (`S` numbers; a check and a reuse then read adjacent cache lines, where
    * three arrays cost a miss each in a pile): B's position (n) and rotation (n×n) in A's frame
@@ -119,9 +129,15 @@ export class ManifoldCache {
         now[n + r * n + c] = s;
       }
     }
-    if (this.valid[slot] === 0) return false;
+    this.apart = false;
+    const valid = this.valid[slot];
+    if (valid === 0) return false;
     const base = slot * this.S;
     const cached = this.data;
+    if (valid === APART) {
+      this.apart = this.stillApart(base, numbers);
+      return false;
+    }
     let dx2 = 0;
     for (let c = 0; c < n; c += 1) {
       const d = now[c] - cached[base + c];
@@ -182,6 +198,59 @@ export class ManifoldCache {
       }
     }
     this.valid[slot] = 1;
+  }
+
+  /**
+   * Keeps, for a box pair the separating-axis test found apart by more than the margin (its
+   * manifold empty), the face it found and the separation (`sat`, as the box–box tests leave it),
+   * with the relative pose the last {@link ManifoldCache.check} read. A mixed axis is not kept.
+   */
+  storeApart(slot: number, sat: SatResult): void {
+    const face = sat.axis;
+    if (sat.kind !== SAT_SEPARATED || face < 0) {
+      this.valid[slot] = 0;
+      return;
+    }
+    const n = this.n;
+    const data = this.data;
+    const base = slot * this.S;
+    for (let e = 0; e < n + n * n; e += 1) data[base + e] = this.now[e];
+    data[base + this.NO] = sat.separation;
+    data[base + this.NO + 1] = face;
+    this.valid[slot] = APART;
+  }
+
+  /**
+   * Whether the box pair kept by storeApart is still apart by more than the margin: along the face
+   * axis it was found on, the separation falls at most by how far the other box's points moved in
+   * that box's frame since, |Δx| + ‖ΔR‖·ρ_B for A's face, |Δx| + ‖ΔR‖·(ρ_A + |x|) for B's (x, R:
+   * B's pose in A's frame; ‖·‖ the Frobenius norm, above the spectral one). The separating-axis
+   * test visits the face axes first and stops at the first that separates, so it would find the
+   * pair apart again: the narrowphase would give the same empty manifold. `numbers`: [reuse
+   * tolerance, ρ_B, ρ_A, margin]. The slack of 1e-9 of the scale covers the rounding.
+   */
+  private stillApart(base: number, numbers: Float64Array): boolean {
+    const n = this.n;
+    const now = this.now;
+    const data = this.data;
+    let dx2 = 0;
+    let x2 = 0;
+    for (let c = 0; c < n; c += 1) {
+      const d = now[c] - data[base + c];
+      dx2 += d * d;
+      x2 += now[c] * now[c];
+    }
+    let dr2 = 0;
+    for (let e = n; e < n + n * n; e += 1) {
+      const d = now[e] - data[base + e];
+      dr2 += d * d;
+    }
+    const separation = data[base + this.NO];
+    const x = Math.sqrt(x2);
+    const arm = data[base + this.NO + 1] < n ? numbers[1] : numbers[2] + x;
+    const slack = 1e-9 * (Math.abs(separation) + x + numbers[1] + numbers[2]);
+    // NaN compares false: a non-finite pose runs the narrowphase.
+    return separation - Math.sqrt(dx2) - Math.sqrt(dr2) * arm - slack > numbers[3];
   }
 
   /**

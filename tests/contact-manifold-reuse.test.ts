@@ -14,7 +14,7 @@ import { collideBoxBox } from '../packages/engine/src/collision/box-box.js';
 import { createManifold, createPose, maxManifoldPoints } from '../packages/engine/src/collision/manifold.js';
 import type { Manifold, Pose } from '../packages/engine/src/collision/manifold.js';
 import { createNarrowphaseScratch } from '../packages/engine/src/collision/narrowphase-scratch-nd.js';
-import { ManifoldCache } from '../packages/engine/src/contacts/manifold-cache.js';
+import { CACHE_APART, CACHE_MISS, CACHE_REUSE, ManifoldCache } from '../packages/engine/src/contacts/manifold-cache.js';
 import type { ContactSet } from '../packages/engine/src/contacts/contact-set.js';
 import { randomRotation, turn } from './support/poses.js';
 import { randomUnitVector, seeded } from './support/random.js';
@@ -88,14 +88,14 @@ describe('ManifoldCache: a reused box–box manifold is the fresh one, moved wit
       expect(m0.count).toBeGreaterThan(0);
       const cache = new ManifoldCache(n, maxManifoldPoints(n));
       const numbers = Float64Array.of(TOLERANCE, Math.sqrt(n) * HALF);
-      expect(cache.check(0, pa, pb, numbers)).toBe(false); // nothing cached yet
+      expect(cache.check(0, pa, pb, numbers)).toBe(CACHE_MISS); // nothing cached yet
       cache.store(0, m0, pa, pb);
       // A rigid motion of the whole pair leaves B's pose in A's frame as it was.
       const R = randomRotation(rand, n);
       const t = randomUnitVector(rand, n).map((v) => 3 * v);
       const qa = moved(n, pa, R, t);
       const qb = moved(n, pb, R, t);
-      expect(cache.check(0, qa, qb, numbers)).toBe(true);
+      expect(cache.check(0, qa, qb, numbers)).toBe(CACHE_REUSE);
       const reused = copyManifold(m0);
       cache.reuse(0, reused, qa, qb);
       const fresh = collide(n, qa, qb);
@@ -125,7 +125,7 @@ describe('ManifoldCache: a reused box–box manifold is the fresh one, moved wit
       turn(n, near.M, 0, 1, (0.4 * TOLERANCE) / (2 * radius));
       const dir = randomUnitVector(rand, n);
       for (let i = 0; i < n; i += 1) near.x[i] = pb.x[i]! + 0.4 * TOLERANCE * dir[i]!;
-      expect(cache.check(0, pa, near, numbers)).toBe(true);
+      expect(cache.check(0, pa, near, numbers)).toBe(CACHE_REUSE);
       const reused = copyManifold(m0);
       cache.reuse(0, reused, pa, near);
       const want = byId(collide(n, pa, near));
@@ -141,22 +141,22 @@ describe('ManifoldCache: a reused box–box manifold is the fresh one, moved wit
       const far = createPose(n);
       far.M.set(pb.M);
       for (let i = 0; i < n; i += 1) far.x[i] = pb.x[i]! + 1.5 * TOLERANCE * dir[i]!;
-      expect(cache.check(0, pa, far, numbers)).toBe(false);
+      expect(cache.check(0, pa, far, numbers)).toBe(CACHE_MISS);
       // A turn by 1.5 tol at the rim, and no shift.
       const turned = createPose(n);
       turned.M.set(pb.M);
       turned.x.set(pb.x);
       turn(n, turned.M, 0, 1, (1.5 * TOLERANCE) / radius);
-      expect(cache.check(0, pa, turned, numbers)).toBe(false);
+      expect(cache.check(0, pa, turned, numbers)).toBe(CACHE_MISS);
       // A non-finite pose is never served from the cache.
       const bad = createPose(n);
       bad.M.set(pb.M);
       bad.x.set(pb.x);
       bad.x[0] = Number.NaN;
-      expect(cache.check(0, pa, bad, numbers)).toBe(false);
+      expect(cache.check(0, pa, bad, numbers)).toBe(CACHE_MISS);
       // A forgotten slot is not reused.
       cache.forget(0);
-      expect(cache.check(0, pa, pb, numbers)).toBe(false);
+      expect(cache.check(0, pa, pb, numbers)).toBe(CACHE_MISS);
     });
   }
 });
@@ -274,14 +274,14 @@ describe('a box pair passed on its kept separation (manifold-cache.ts, storeApar
       let kept = 0;
       let found = 0;
       cache.check = (slot, poseA, poseB, numbers) => {
-        const reused = check(slot, poseA, poseB, numbers);
-        if (cache.apart) {
+        const cached = check(slot, poseA, poseB, numbers);
+        if (cached === CACHE_APART) {
           kept += 1;
           const [a, b] = [set.shapeA[slot], set.shapeB[slot]] as unknown as CollidableShape[];
           collideShapes(fresh, n, a!, poseA, b!, poseB, numbers[3]!, scratch);
           if (fresh.count > 0) found += 1;
         }
-        return reused;
+        return cached;
       };
       run(world, 240);
       expect(found).toBe(0);

@@ -736,10 +736,9 @@ const KNOWN_FIELDS: Record<string, readonly string[]> = {
     'orderHoles',
     'solverSet',
   ],
-  // (`apart`: the last check's answer; a kept separation is not saved, the narrowphase finds it again)
-  ManifoldCache: ['n', 'P', 'valid', 'apart', 'data', 'S', 'NO', 'LO', 'now', 'world'],
+  ManifoldCache: ['n', 'P', 'valid', 'data', 'S', 'NO', 'LO', 'now', 'world'],
   // The root World's cache: ManifoldCache with the 4D reuse written out, no field of its own.
-  ManifoldCacheND: ['n', 'P', 'valid', 'apart', 'data', 'S', 'NO', 'LO', 'now', 'world'],
+  ManifoldCacheND: ['n', 'P', 'valid', 'data', 'S', 'NO', 'LO', 'now', 'world'],
   TreeBroadphase: [
     'n',
     'margin',

@@ -23,7 +23,7 @@ import type { NarrowphaseScratch } from '../collision/narrowphase-scratch.js';
 import type { Params } from '../params.js';
 import type { Shape } from '../shapes/shape.js';
 import type { ContactEvents } from './contact-events.js';
-import { ManifoldCache } from './manifold-cache.js';
+import { CACHE_APART, CACHE_REUSE, ManifoldCache } from './manifold-cache.js';
 
 export { growFloat64, growInt32 } from './grow.js';
 import { growFloat64, growInt32 } from './grow.js';
@@ -885,14 +885,15 @@ export class ContactSet {
         reuseNumbers[2] = A.boundingRadius;
         reuseNumbers[3] = pairMargin;
         const cache = this.cache;
-        if (cache.check(slot, pA, pB, reuseNumbers)) {
+        const cached = cache.check(slot, pA, pB, reuseNumbers);
+        if (cached === CACHE_REUSE) {
           cache.reuse(slot, m, pA, pB);
           let touching = false;
           for (let p = 0; p < m.count; p += 1) if (m.separations[p] < margin) touching = true;
           this.flags[slot] = flags | (m.count > 0 ? CONTACT_ACTIVE : 0) | (touching ? CONTACT_TOUCHING : 0);
           continue;
         }
-        if (cache.apart) {
+        if (cached === CACHE_APART) {
           // Two boxes still apart by the separation the narrowphase last found (most near pairs
           // of a resting pile): it would give the same empty manifold; the rest is what the
           // narrowphase path does with one (m.count is 0 since).

@@ -29,20 +29,25 @@ import { SAT_SEPARATED } from '../collision/narrowphase-scratch.js';
 import type { SatResult } from '../collision/narrowphase-scratch.js';
 import { growFloat64 } from './grow.js';
 
-/** ManifoldCache.valid: the slot keeps a box pair's separation (storeApart). */
-const APART = 2;
+/** ManifoldCache.check: compute the manifold afresh. */
+export const CACHE_MISS = 0;
+/** ManifoldCache.check: reuse the cached manifold. */
+export const CACHE_REUSE = 1;
+/**
+ * ManifoldCache.check: the box pair is still apart by its kept separation (the narrowphase would
+ * give an empty manifold). Also ManifoldCache.valid's mark of a slot that keeps one (storeApart).
+ */
+export const CACHE_APART = 2;
 
 /** The cached manifolds of a contact set's slots (n dimensions, `P` points per slot). */
 export class ManifoldCache {
   protected readonly n: number;
   protected readonly P: number;
   /**
-   * Per slot: 1 when it holds a cached manifold; APART when it holds a box pair's separation
+   * Per slot: 1 when it holds a cached manifold; CACHE_APART when it holds a box pair's separation
    * instead (see {@link ManifoldCache.storeApart}); 0 when nothing.
    */
   private valid = new Uint8Array(16);
-  /** Whether the last {@link ManifoldCache.check} found the pair still apart by its kept separation. */
-  apart = false;
   /**
    * Per slot, side by side (`S` numbers; a check and a reuse then read adjacent cache lines, where
    * three arrays cost a miss each in a pile): B's position (n) and rotation (n×n) in A's frame
@@ -109,12 +114,14 @@ export class ManifoldCache {
   }
 
   /**
-   * Reads B's pose relative to A (kept for {@link ManifoldCache.store}) and returns whether the
-   * slot's cached manifold may be reused: no point of B (within `numbers[1]` of its pose origin)
-   * has moved more than `numbers[0]` relative to A since it was computed. (The numbers come in
-   * an array: a double argument of a call V8 does not inline would be boxed.)
+   * Reads B's pose relative to A (kept for {@link ManifoldCache.store}) and returns what the
+   * slot's cache allows: CACHE_REUSE when its manifold may be reused (no point of B, within
+   * `numbers[1]` of its pose origin, has moved more than `numbers[0]` relative to A since it was
+   * computed), CACHE_APART when its box pair is still apart by the kept separation (see
+   * `stillApart`), else CACHE_MISS. (The numbers come in an array: a double argument of a call
+   * V8 does not inline would be boxed.)
    */
-  check(slot: number, poseA: Pose, poseB: Pose, numbers: Float64Array): boolean {
+  check(slot: number, poseA: Pose, poseB: Pose, numbers: Float64Array): number {
     const n = this.n;
     const now = this.now;
     const MA = poseA.M;
@@ -129,15 +136,11 @@ export class ManifoldCache {
         now[n + r * n + c] = s;
       }
     }
-    this.apart = false;
     const valid = this.valid[slot];
-    if (valid === 0) return false;
+    if (valid === 0) return CACHE_MISS;
     const base = slot * this.S;
     const cached = this.data;
-    if (valid === APART) {
-      this.apart = this.stillApart(base, numbers);
-      return false;
-    }
+    if (valid === CACHE_APART) return this.stillApart(base, numbers) ? CACHE_APART : CACHE_MISS;
     let dx2 = 0;
     for (let c = 0; c < n; c += 1) {
       const d = now[c] - cached[base + c];
@@ -149,7 +152,7 @@ export class ManifoldCache {
       dr2 += d * d;
     }
     // NaN compares false: a non-finite pose is never served from the cache.
-    return Math.sqrt(dx2) + Math.sqrt(dr2) * numbers[1] <= numbers[0];
+    return Math.sqrt(dx2) + Math.sqrt(dr2) * numbers[1] <= numbers[0] ? CACHE_REUSE : CACHE_MISS;
   }
 
   /**
@@ -217,7 +220,7 @@ export class ManifoldCache {
     for (let e = 0; e < n + n * n; e += 1) data[base + e] = this.now[e];
     data[base + this.NO] = sat.separation;
     data[base + this.NO + 1] = face;
-    this.valid[slot] = APART;
+    this.valid[slot] = CACHE_APART;
   }
 
   /**

@@ -93,24 +93,20 @@ export class JointTree {
   private rdiag = new Float64Array(64);
   private col: Float64Array;
   private hblk = new Float64Array(64);
-  /** Size of the D blocks in `mat` (the W blocks follow). */
-  private dSize = 0;
   /** The tree bodies' v and ω after the last `passVelocities` solve (bs per body node). */
   private saved = new Float64Array(64);
   /** 1 while `saved` belongs to the current factorisation. */
   private savedOk = 0;
   /**
-   * What the last `factor` factored: the assembled D blocks (before their factorisation) and the
-   * Jacobians of the joint nodes' rows, for the forest `build` last built (a build that builds
-   * anew clears `lastOk`). A `factor` whose input is the same, bit for bit,
+   * What the last `factor` factored was made of (see `sameInput`), for the forest `build` last
+   * built (a build that builds anew clears `lastOk`). A `factor` whose input is the same, bit for bit,
    * keeps the factorisation (the velocity projection's, at the end of a sub-step, is the next
    * prepare's when nothing moved in between: the same poses, inertia and impulses).
    */
-  private inD = new Float64Array(64);
-  private lastD = new Float64Array(64);
-  private lastJ = new Float64Array(64);
-  private lastSize = -1;
-  /** 1 while `mat` holds the factorisation of the last input (`lastD`, `lastJ`) on this forest. */
+  private lastIn = new Float64Array(64);
+  /** The length of that record. */
+  private lastLen = -1;
+  /** 1 while `mat` holds the factorisation of the input recorded in `lastIn` on this forest. */
   private lastOk = 0;
 
   constructor(D: Dims) {
@@ -263,7 +259,6 @@ export class JointTree {
       this.mat = growFloat64(this.mat, dOff + wOff, 0);
       this.lastOk = 0;
     }
-    this.dSize = dOff;
     this.vec = growFloat64(this.vec, vOff, 0);
     this.piv = growInt32(this.piv, 2 * vOff, 0);
     this.rdiag = growFloat64(this.rdiag, vOff, 0);
@@ -458,71 +453,104 @@ export class JointTree {
   }
 
   /**
-   * Assembles the D blocks into `inD` and returns 1 when they and the Jacobians of the joint nodes'
-   * rows are those of the factorisation `mat` holds, on the same forest (nothing to do);
-   * otherwise copies the blocks into `mat`, records the input and returns 0.
+   * Records what the D blocks and the couplings are made of (the stiffness scale; each body
+   * node's mass and world inertia; every tree joint's Jacobian rows and, with a stiffness, its
+   * impulses) and returns 1 when all of it equals, bit for bit, what the factorisation `mat`
+   * holds was made of, on the same forest: the factorisation is then that of this input.
+   * Comparing the sources costs less than assembling the blocks to compare them.
    */
   private sameInput(js: JointSolver, sb: SolverBodies): number {
+    const { k } = this;
     const N = this.nodeCount;
-    const dSize = this.dSize;
-    if (this.inD.length < dSize) this.inD = growFloat64(this.inD, dSize, 0);
-    const inD = this.inD;
-    this.assemble(js, sb, inD);
-    // The joint nodes' Jacobians (their sides, the sign of a coupling, are the forest's).
-    const RS = js.RS;
-    const width = this.n + 2 * this.k;
-    let jLen = 0;
-    for (let i = 0; i < N; i += 1) if (this.nKind[i] === 1) jLen += this.nSize[i] * width;
-    let same = this.lastOk === 1 && this.lastSize === dSize && this.lastJ.length >= jLen ? 1 : 0;
-    if (same === 1) {
-      const lastD = this.lastD;
-      for (let q = 0; q < dSize; q += 1) {
-        if (inD[q] !== lastD[q]) {
+    const width = this.n + 2 * k;
+    const stiff = this.stiffness;
+    let len = 1;
+    for (let i = 0; i < N; i += 1) {
+      if (this.nKind[i] === 1) len += this.nSize[i] * (width + 1);
+      else {
+        len += 1 + k * k;
+        for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) len += js.jBlock[j] * (width + 1);
+      }
+    }
+    if (this.lastIn.length < len) {
+      this.lastIn = growFloat64(this.lastIn, len, 0);
+      this.lastOk = 0;
+    }
+    const last = this.lastIn;
+    let same = this.lastOk === 1 && this.lastLen === len ? 1 : 0;
+    let at = 0;
+    if (last[at] !== stiff) {
+      same = 0;
+      last[at] = stiff;
+    }
+    at += 1;
+    const inertia = sb.inertia;
+    for (let i = 0; i < N; i += 1) {
+      if (this.nKind[i] === 1) {
+        at = this.recordRows(js, this.nRef[i], width, stiff, at);
+        if (at < 0) {
           same = 0;
-          break;
+          at = -at;
+        }
+        continue;
+      }
+      const slot = this.nRef[i];
+      const im = sb.invMass[slot];
+      if (last[at] !== im) {
+        same = 0;
+        last[at] = im;
+      }
+      at += 1;
+      for (let q = 0, i0 = slot * k * k; q < k * k; q += 1, at += 1) {
+        const v = inertia[i0 + q];
+        if (last[at] !== v) {
+          same = 0;
+          last[at] = v;
+        }
+      }
+      for (let j = this.fold[i]; j >= 0; j = this.foldNext[j]) {
+        at = this.recordRows(js, j, width, stiff, at);
+        if (at < 0) {
+          same = 0;
+          at = -at;
         }
       }
     }
-    if (same === 1) {
-      const lastJ = this.lastJ;
-      const rows = js.rows;
-      for (let i = 0, at = 0; i < N && same === 1; i += 1) {
-        if (this.nKind[i] !== 1) continue;
-        const first = js.jFirst[this.nRef[i]];
-        for (let r = 0; r < this.nSize[i] && same === 1; r += 1) {
-          const base = (first + r) * RS;
-          for (let c = 0; c < width; c += 1) {
-            if (lastJ[at++] !== rows[base + c]) {
-              same = 0;
-              break;
-            }
-          }
-        }
-      }
-    }
+    this.lastLen = len;
     if (same === 1) return 1;
-    // Record this input, and hand the blocks to the factorisation.
-    if (this.lastD.length < dSize) this.lastD = growFloat64(this.lastD, dSize, 0);
-    const mat = this.mat;
-    const lastD = this.lastD;
-    for (let q = 0; q < dSize; q += 1) {
-      mat[q] = inD[q];
-      lastD[q] = inD[q];
-    }
-    if (this.lastJ.length < jLen) this.lastJ = growFloat64(this.lastJ, jLen, 0);
-    const lastJ = this.lastJ;
-    const rows = js.rows;
-    for (let i = 0, jAt = 0; i < N; i += 1) {
-      if (this.nKind[i] !== 1) continue;
-      const first = js.jFirst[this.nRef[i]];
-      for (let r = 0; r < this.nSize[i]; r += 1) {
-        const base = (first + r) * RS;
-        for (let c = 0; c < width; c += 1) lastJ[jAt++] = rows[base + c];
-      }
-    }
-    this.lastSize = dSize;
+    this.assemble(js, sb, this.mat);
     this.lastOk = 1;
     return 0;
+  }
+
+  /**
+   * Records joint j's Jacobian rows (and, with a stiffness, its impulses) into `lastIn` from `at`;
+   * returns the end, negated when anything differed from what was there.
+   */
+  private recordRows(js: JointSolver, j: number, width: number, stiff: number, at: number): number {
+    const last = this.lastIn;
+    const rows = js.rows;
+    const RS = js.RS;
+    const first = js.jFirst[j];
+    const lam = js.joints[j].lambda;
+    let differs = 0;
+    for (let r = 0; r < js.jBlock[j]; r += 1) {
+      const base = (first + r) * RS;
+      for (let c = 0; c < width; c += 1, at += 1) {
+        const v = rows[base + c];
+        if (last[at] !== v) {
+          differs = 1;
+          last[at] = v;
+        }
+      }
+      const l = stiff > 0 ? lam[js.rowKey[first + r]] : 0;
+      if (last[at] !== l) {
+        differs = 1;
+        last[at] = l;
+      }
+      at += 1;
+    }
+    return differs === 1 ? -at : at;
   }
 
   /**
@@ -540,39 +568,48 @@ export class JointTree {
       this.assemble(js, sb, this.mat);
       this.lastOk = 0;
     } else if (this.sameInput(js, sb) === 1) return;
-    const mat = this.mat;
+    const N = this.nodeCount;
+    const order = this.nOrder;
+    const size = this.nSize;
+    const kind = this.nKind;
+    const ref = this.nRef;
+    const parent = this.nParent;
+    const nD = this.nD;
+    const nW = this.nW;
+    const nV = this.nV;
+    const ldl = this.nLdl;
     let maxSize = 0;
-    for (let i = 0; i < this.nodeCount; i += 1) if (this.nSize[i] > maxSize) maxSize = this.nSize[i];
+    for (let i = 0; i < N; i += 1) if (size[i] > maxSize) maxSize = size[i];
     this.col = growFloat64(this.col, maxSize, 0);
-    for (let o = 0; o < this.nodeCount; o += 1) {
-      const i = this.nOrder[o];
-      const s = this.nSize[i];
+    if (this.hblk.length < maxSize * maxSize) this.hblk = growFloat64(this.hblk, maxSize * maxSize, 0);
+    const H = this.hblk;
+    for (let o = 0; o < N; o += 1) {
+      const i = order[o];
+      const s = size[i];
       // A body's unknowns give positive pivots, its folded rows and a joint's rows negative ones.
-      this.nLdl[i] = this.ldlFactor(this.nD[i], s, this.nKind[i] === 1 ? 0 : this.bs, this.nV[i]);
-      if (this.nLdl[i] === 0) this.luFactor(this.nD[i], s, this.nPiv[i]);
-      const p = this.nParent[i];
+      ldl[i] = this.ldlFactor(nD[i], s, kind[i] === 1 ? 0 : this.bs, nV[i]);
+      if (ldl[i] === 0) this.luFactor(nD[i], s, this.nPiv[i]);
+      const p = parent[i];
       if (p < 0) continue;
-      const sp = this.nSize[p];
-      const w0 = this.nW[i];
-      // W_i = D_i⁻¹ H_ip, column by column; then D_p −= H_pi W_i.
-      const jointIsChild = this.nKind[i] === 1;
-      const j = jointIsChild ? this.nRef[i] : this.nRef[p];
-      const slot = jointIsChild ? this.nRef[p] : this.nRef[i];
+      const sp = size[p];
+      const w0 = nW[i];
+      const jointIsChild = kind[i] === 1;
+      const j = jointIsChild ? ref[i] : ref[p];
+      const slot = jointIsChild ? ref[p] : ref[i];
       // H_ip (s × sp) once, then W_i = D_i⁻¹ H_ip column by column and D_p −= H_ipᵀ W_i.
-      if (this.hblk.length < s * sp) this.hblk = growFloat64(this.hblk, s * sp, 0);
-      const H = this.hblk;
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
+      const mat = this.mat;
       for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
-      if (this.nLdl[i] === 1) this.ldlSolveColumns(this.nD[i], s, mat, w0, sp, this.nV[i]);
-      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], mat, w0, sp);
+      if (ldl[i] === 1) this.ldlSolveColumns(nD[i], s, mat, w0, sp, nV[i]);
+      else this.luSolveColumns(nD[i], s, this.nPiv[i], mat, w0, sp);
       // D_p −= H_ipᵀ W_i is symmetric: only its lower triangle (and diagonal) is updated, which is
       // all the LDLᵀ reads (a fallback to the LU mirrors it first).
-      const dp = this.nD[p];
+      const dp = nD[p];
       for (let q = 0; q < s; q += 1) {
-        for (let r = 0; r < sp; r += 1) {
-          const h = H[q * sp + r];
+        const wq = w0 + q * sp;
+        for (let r = 0, hq = q * sp; r < sp; r += 1) {
+          const h = H[hq + r];
           if (h === 0) continue;
-          const wq = w0 + q * sp;
           const dr = dp + r * sp;
           for (let c = 0; c <= r; c += 1) mat[dr + c] -= h * mat[wq + c];
         }
@@ -586,39 +623,46 @@ export class JointTree {
    * w_i = D_i⁻¹ z_i, then backward x_i = w_i − W_i x_p (root first).
    */
   private solveVec(): void {
+    // The fields read in the loops, in locals (the calls below could otherwise make V8 reload them).
     const mat = this.mat;
     const vec = this.vec;
+    const order = this.nOrder;
+    const size = this.nSize;
+    const parent = this.nParent;
+    const nV = this.nV;
+    const nW = this.nW;
+    const nD = this.nD;
+    const ldl = this.nLdl;
     const N = this.nodeCount;
     for (let o = 0; o < N; o += 1) {
-      const i = this.nOrder[o];
-      const s = this.nSize[i];
-      const v0 = this.nV[i];
-      const p = this.nParent[i];
+      const i = order[o];
+      const s = size[i];
+      const v0 = nV[i];
+      const p = parent[i];
       if (p >= 0) {
-        const sp = this.nSize[p];
-        const w0 = this.nW[i];
-        const vp = this.nV[p];
+        const sp = size[p];
+        const w0 = nW[i];
+        const vp = nV[p];
         for (let c = 0; c < sp; c += 1) {
           let sum = 0;
-          for (let r = 0; r < s; r += 1) sum += mat[w0 + r * sp + c] * vec[v0 + r];
+          for (let r = 0, at = w0 + c; r < s; r += 1, at += sp) sum += mat[at] * vec[v0 + r];
           vec[vp + c] -= sum;
         }
       }
-      if (this.nLdl[i] === 1) this.ldlSolveColumns(this.nD[i], s, vec, v0, 1, v0);
-      else this.luSolveColumns(this.nD[i], s, this.nPiv[i], vec, v0, 1);
+      if (ldl[i] === 1) this.ldlSolveColumns(nD[i], s, vec, v0, 1, v0);
+      else this.luSolveColumns(nD[i], s, this.nPiv[i], vec, v0, 1);
     }
     for (let o = N - 1; o >= 0; o -= 1) {
-      const i = this.nOrder[o];
-      const p = this.nParent[i];
+      const i = order[o];
+      const p = parent[i];
       if (p < 0) continue;
-      const s = this.nSize[i];
-      const sp = this.nSize[p];
-      const v0 = this.nV[i];
-      const w0 = this.nW[i];
-      const vp = this.nV[p];
-      for (let r = 0; r < s; r += 1) {
+      const s = size[i];
+      const sp = size[p];
+      const v0 = nV[i];
+      const vp = nV[p];
+      for (let r = 0, at = nW[i]; r < s; r += 1) {
         let sum = 0;
-        for (let c = 0; c < sp; c += 1) sum += mat[w0 + r * sp + c] * vec[vp + c];
+        for (let c = 0; c < sp; c += 1, at += 1) sum += mat[at] * vec[vp + c];
         vec[v0 + r] -= sum;
       }
     }
@@ -809,8 +853,8 @@ export class JointTree {
     const rd = this.rdiag;
     for (let q = 0; q < s - 1; q += 1) {
       const xq = x0 + q * m;
-      for (let r = q + 1; r < s; r += 1) {
-        const f = A[d0 + q * s + r];
+      for (let r = q + 1, at = d0 + q * s + q + 1; r < s; r += 1, at += 1) {
+        const f = A[at];
         if (f === 0) continue;
         const xr = x0 + r * m;
         for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];
@@ -820,8 +864,8 @@ export class JointTree {
       const xr = x0 + r * m;
       const d = rd[r0 + r];
       for (let c = 0; c < m; c += 1) X[xr + c] *= d;
-      for (let q = r + 1; q < s; q += 1) {
-        const f = A[d0 + r * s + q];
+      for (let q = r + 1, at = d0 + r * s + r + 1; q < s; q += 1, at += 1) {
+        const f = A[at];
         if (f === 0) continue;
         const xq = x0 + q * m;
         for (let c = 0; c < m; c += 1) X[xr + c] -= f * X[xq + c];

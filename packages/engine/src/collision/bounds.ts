@@ -146,8 +146,8 @@ export function computeBoundsUnchecked(
 /**
  * The bounds a world asks for each step: {@link computeBoundsUnchecked} for a box, a ball or a
  * half-space, and for every other kind the `bounds` its factory attaches (HyperTorus, ConvexMesh
- * and Capsule attach computeBoundsUnchecked), so a world of boxes carries none of the torus, mesh
- * or capsule code. The same bits as computeBoundsUnchecked; allocates nothing.
+ * and HyperCapsule attach computeBoundsUnchecked), so a world of boxes carries none of the torus,
+ * mesh or capsule code. The same bits as computeBoundsUnchecked; allocates nothing.
  */
 export function computeBoundsCommon(
   outMin: Float64Array,

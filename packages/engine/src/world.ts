@@ -7,7 +7,7 @@ import { checkInteger, checkNumber, checkVector, MAX_DIMENSION, MIN_DIMENSION } 
 import type { Dims } from '@physin/algebra';
 import { Body, MOTION_DYNAMIC, MOTION_STATIC } from './body.js';
 import type { BodyOwner } from './body.js';
-import { computeBoundsUnchecked } from './collision/bounds.js';
+import { computeBoundsCommon } from './collision/bounds.js';
 import { TreeBroadphase } from './collision/broadphase-tree.js';
 import type { Broadphase } from './collision/broadphase.js';
 import type { BroadphaseBase } from './collision/broadphase-base.js';
@@ -1026,7 +1026,7 @@ export class WorldBase {
   private boundsOf(body: Body): void {
     let pose = body.pose;
     if (pose === null) this.fillPose(body, (pose = this.lazyPose));
-    computeBoundsUnchecked(this.scratch.min, this.scratch.max, this.n, body.shape as unknown as QueryShape, pose.x, pose.M, 0);
+    computeBoundsCommon(this.scratch.min, this.scratch.max, this.n, body.shape as unknown as QueryShape, pose.x, pose.M, 0);
   }
 
   /** Moves the proxy of a body to its current pose (a half-space by its plane). */

@@ -17,6 +17,20 @@ import type {
 import { shapeKind } from './shape-kind.js';
 
 /**
+ * @internal The bounds of a posed shape (the signature of {@link computeBoundsUnchecked}): what a
+ * torus, mesh or capsule attaches as its `bounds` for {@link computeBoundsCommon}.
+ */
+export type ShapeBounds = (
+  outMin: Float64Array,
+  outMax: Float64Array,
+  n: number,
+  shape: QueryShape,
+  x: ArrayLike<number>,
+  M: ArrayLike<number>,
+  margin: number,
+) => Float64Array;
+
+/**
  * Writes the world bounding box of `shape` placed at pose (x, M), grown by `margin` on every
  * side, into outMin/outMax (n numbers each, m). Validates every argument first.
  *
@@ -72,26 +86,6 @@ export function computeBoundsUnchecked(
   margin: number,
 ): Float64Array {
   switch (shapeKind(shape)) {
-    case 'box': {
-      const a = (shape as BoxGeometry).halfExtents;
-      for (let k = 0; k < n; k += 1) {
-        let e = 0;
-        const row = k * n;
-        for (let c = 0; c < n; c += 1) e += Math.abs(M[row + c]!) * a[c]!;
-        e += margin;
-        outMin[k] = x[k]! - e;
-        outMax[k] = x[k]! + e;
-      }
-      return outMin;
-    }
-    case 'sphere': {
-      const e = (shape as SphereGeometry).radius + margin;
-      for (let k = 0; k < n; k += 1) {
-        outMin[k] = x[k]! - e;
-        outMax[k] = x[k]! + e;
-      }
-      return outMin;
-    }
     case 'torus': {
       const torus = shape as TorusGeometry;
       const R = torus.majorRadius;
@@ -127,10 +121,6 @@ export function computeBoundsUnchecked(
       }
       return outMin;
     }
-    case 'halfspace': {
-      halfSpaceBounds(outMin, outMax, n, shape as HalfSpaceGeometry, x, M, margin);
-      return outMin;
-    }
     case 'capsule': {
       const capsule = shape as CapsuleGeometry;
       const h = capsule.halfHeight;
@@ -143,9 +133,61 @@ export function computeBoundsUnchecked(
       }
       return outMin;
     }
+    case 'box':
+    case 'sphere':
+    case 'halfspace':
+      return computeBoundsCommon(outMin, outMax, n, shape, x, M, margin);
     default:
       // A compound has no bounds of its own: each of its parts is placed as a shape of its own.
       throw new TypeError(`computeBounds: a '${String(shapeKind(shape))}' shape has no bounds of its own`);
+  }
+}
+
+/**
+ * The bounds a world asks for each step: {@link computeBoundsUnchecked} for a box, a ball or a
+ * half-space, and for every other kind the `bounds` its factory attaches (HyperTorus, ConvexMesh
+ * and HyperCapsule attach computeBoundsUnchecked), so a world of boxes carries none of the torus,
+ * mesh or capsule code. The same bits as computeBoundsUnchecked; allocates nothing.
+ */
+export function computeBoundsCommon(
+  outMin: Float64Array,
+  outMax: Float64Array,
+  n: number,
+  shape: QueryShape,
+  x: ArrayLike<number>,
+  M: ArrayLike<number>,
+  margin: number,
+): Float64Array {
+  switch (shapeKind(shape)) {
+    case 'box': {
+      const a = (shape as BoxGeometry).halfExtents;
+      for (let k = 0; k < n; k += 1) {
+        let e = 0;
+        const row = k * n;
+        for (let c = 0; c < n; c += 1) e += Math.abs(M[row + c]!) * a[c]!;
+        e += margin;
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    case 'sphere': {
+      const e = (shape as SphereGeometry).radius + margin;
+      for (let k = 0; k < n; k += 1) {
+        outMin[k] = x[k]! - e;
+        outMax[k] = x[k]! + e;
+      }
+      return outMin;
+    }
+    case 'halfspace': {
+      halfSpaceBounds(outMin, outMax, n, shape as HalfSpaceGeometry, x, M, margin);
+      return outMin;
+    }
+    default: {
+      const own = (shape as { readonly bounds?: ShapeBounds }).bounds;
+      if (own === undefined) throw new TypeError(`computeBounds: a '${String(shapeKind(shape))}' shape has no bounds of its own`);
+      return own(outMin, outMax, n, shape, x, M, margin);
+    }
   }
 }
 

@@ -116,3 +116,22 @@ export function collideBoxSphereKernel(
   out.count = 1;
   return true;
 }
+
+/**
+ * Ball (A) against box (B), for the ball's collider table: {@link collideBoxSphereKernel} with the
+ * roles swapped and the normal turned to run from the ball to the box. The dispatch (collide.ts)
+ * turns it back for a box–ball pair, so either order gives the bits the box–ball kernel gives.
+ */
+export function collideSphereBoxKernel(
+  out: Manifold,
+  n: number,
+  a: CollisionSphere,
+  poseA: Pose,
+  b: CollisionBox,
+  poseB: Pose,
+  scratch: NarrowphaseScratch,
+): boolean {
+  if (!collideBoxSphereKernel(out, n, b, poseB, a, poseA, scratch)) return false;
+  for (let i = 0; i < n; i += 1) out.normal[i] = -out.normal[i]!;
+  return true;
+}

@@ -4,6 +4,7 @@ import { checkDims, checkPositive } from './checks.js';
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import { checkMagnitude, inputLimits } from './limits.js';
 import type { MassProperties, Shape } from './shape.js';
+import { computeBoundsUnchecked } from '../collision/bounds.js';
 import { capsuleColliders } from '../collision/capsule-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
 
@@ -86,6 +87,8 @@ export function HyperCapsule(D: Dims, halfHeight: number, radius: number): Capsu
   return Object.freeze({
     // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
     colliders: capsuleColliders,
+    // Its bounds too: a world of boxes, balls and half-spaces carries no code of other kinds.
+    bounds: computeBoundsUnchecked,
     kind: 'capsule' as const,
     n,
     halfHeight: h,

@@ -10,6 +10,7 @@ import { principalFrame } from './principal-frame.js';
 import type { MassProperties, Shape } from './shape.js';
 import { mergeTriangles } from './triangle-merge.js';
 import type { TriangleMergeOptions } from './triangle-merge.js';
+import { computeBoundsUnchecked } from '../collision/bounds.js';
 import { meshColliders } from '../collision/mesh-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
 
@@ -345,6 +346,8 @@ function buildConvexMesh(
   return Object.freeze({
     // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
     colliders: meshColliders,
+    // Its bounds too: a world of boxes, balls and half-spaces carries no code of other kinds.
+    bounds: computeBoundsUnchecked,
     kind: 'mesh' as const,
     n,
     vertices: local,

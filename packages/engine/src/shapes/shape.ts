@@ -1,4 +1,5 @@
 import type { Dims } from '@physin/algebra';
+import type { ShapeBounds } from '../collision/bounds.js';
 import type { ColliderTable } from '../collision/manifold.js';
 
 /** The kinds of shape the engine knows. */
@@ -50,4 +51,10 @@ export interface Shape {
    * live in the other shapes' tables).
    */
   readonly colliders?: ColliderTable;
+  /**
+   * @internal The world bounds of a posed shape of a kind the world does not bound itself (a torus,
+   * mesh or capsule: see collision/bounds.ts, computeBoundsCommon). Absent for a box, a ball, a
+   * half-space (bounded by the world) and a compound (its parts are).
+   */
+  readonly bounds?: ShapeBounds;
 }

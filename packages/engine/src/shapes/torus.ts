@@ -4,6 +4,7 @@ import { checkDims, checkIndex, checkPositive, isNumberList } from './checks.js'
 import { checkMassArguments, diagonalMassProperties } from './mass-properties.js';
 import { checkMagnitude, inputLimits } from './limits.js';
 import type { MassProperties, Shape } from './shape.js';
+import { computeBoundsUnchecked } from '../collision/bounds.js';
 import { torusColliders } from '../collision/torus-colliders.js';
 import { registerShapeFactory } from '../snapshot/registry.js';
 
@@ -86,6 +87,8 @@ export function HyperTorus(
   return Object.freeze({
     // Collision pairs travel with the shape, so an unused shape leaves its collision code out of the bundle.
     colliders: torusColliders,
+    // Its bounds too: a world of boxes, balls and half-spaces carries no code of other kinds.
+    bounds: computeBoundsUnchecked,
     kind: 'torus' as const,
     n,
     majorRadius: R,

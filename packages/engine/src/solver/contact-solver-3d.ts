@@ -115,6 +115,8 @@ export class ContactSolver3 extends ContactSolver {
     const lambdaW = this.lambdaW;
     const target = this.target;
     const maxLambda = this.maxLambda;
+    // Only restitution and store read maxLambda, and only for a pair that bounces.
+    const bouncy = this.mfRestitution[mf] !== 0;
     let change = 0;
     if (mu > 0) {
       let sumN = 0;
@@ -244,7 +246,7 @@ export class ContactSolver3 extends ContactSolver {
       const old = lambdaN[cp];
       const nl = Math.max(0, old + (target[cp] - vn) / K);
       lambdaN[cp] = nl;
-      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
+      if (bouncy && nl > maxLambda[cp]) maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
       const moved = Math.abs(dl) * K;

@@ -370,13 +370,14 @@ export abstract class ContactSolver {
           const recorded = contacts.approachSpeed[slot * P + pq];
           this.vn0[cp] = Math.min(vn < 0 ? wNow - shift : vn, recorded);
           this.bounceGap[cp] = recorded < 0 ? slop : 0;
+          sep[cp] = s;
+          maxLambda[cp] = 0;
         }
-        // (a pair with e = 0 leaves vn0, vnStop and bounceGap as they are: no pass reads them)
+        // A pair with e = 0 leaves vn0, vnStop, bounceGap, sep and maxLambda as they are: only
+        // restitution and store read them, for a pair that bounces (streams less to write).
         // The velocity target of the point.
         const s = seps[pq];
-        sep[cp] = s;
         target[cp] = s > 0 ? -s / h : bias * Math.max(0, -s - slop);
-        maxLambda[cp] = 0;
         lambdaN[cp] = warm ? normalImpulse[slot * P + pq] : 0;
       }
       // The friction patch at the centroid of the points.

@@ -130,12 +130,14 @@ export class SolverBodies {
     let iso = true;
     for (let q = 1; q < k; q += 1) if (inv[q] !== inv[0] || I[q] !== I[0]) iso = false;
     if (iso) {
-      // Q diag(s) Qᵀ = s·QQᵀ = s·identity: no rotation needed.
-      out.fill(0, at, at + k * k);
-      outI.fill(0, at, at + k * k);
+      // Q diag(s) Qᵀ = s·QQᵀ = s·identity: no rotation needed. (A loop: fill is a call per body.)
+      const s = inv[0];
+      const t = I[0];
       for (let r = 0; r < k; r += 1) {
-        out[at + r * k + r] = inv[0];
-        outI[at + r * k + r] = I[0];
+        for (let c = 0; c < k; c += 1) {
+          out[at + r * k + c] = r === c ? s : 0;
+          outI[at + r * k + c] = r === c ? t : 0;
+        }
       }
       this.isoInvInertia[slot] = inv[0];
       return;

@@ -142,6 +142,7 @@ export abstract class ContactSolver {
    * `restitution`), in the units of vn0 (the bounce sets the normal velocity to −e times it).
    */
   protected vnStop = new Float64Array(16);
+  /** Per point: the gap (the shared prepare sets it, and vn0, vnStop, bounceGap, only if e != 0). */
   protected sep = new Float64Array(16);
   /**
    * Per point: the largest gap from which it bounces in this sub-step: `penetrationSlop` for a
@@ -150,6 +151,7 @@ export abstract class ContactSolver {
    */
   protected bounceGap = new Float64Array(16);
   protected lambdaN = new Float64Array(16);
+  /** Per point: the largest normal impulse of the sub-step (read, and in 3D kept, only if e != 0). */
   protected maxLambda = new Float64Array(16);
 
   protected readonly constants = new Float64Array(7);

@@ -9,7 +9,7 @@
  *
  * @module
  */
-import { ContactSolver, SOLVE_CHANGE } from './contact-solver.js';
+import { ContactSolver, SOLVE_CHANGE, SOLVE_TOLERANCE } from './contact-solver.js';
 import type { SolverBodies } from './solver-bodies.js';
 
 /** The contact solver for n = 3 alone (see the module comment). */
@@ -115,6 +115,12 @@ export class ContactSolver3 extends ContactSolver {
     const lambdaW = this.lambdaW;
     const target = this.target;
     const maxLambda = this.maxLambda;
+    // Only restitution and store read maxLambda, and only for a pair that bounces.
+    const bouncy = this.mfRestitution[mf] !== 0;
+    // The passes only ask whether some row's velocity changed by more than the tolerance: a
+    // change above it is kept, not the largest (a compare with a running maximum is a branch
+    // the processor mispredicts on every row).
+    const tolerance = this.constants[SOLVE_TOLERANCE];
     let change = 0;
     if (mu > 0) {
       let sumN = 0;
@@ -158,7 +164,7 @@ export class ContactSolver3 extends ContactSolver {
         // Applied one row after the other, as the general loop does.
         if (d1 !== 0) {
           const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
+          if (moved > tolerance) change = moved;
           const la = ima * d1;
           const lb = imb * d1;
           vax -= la * patch[t1];
@@ -178,7 +184,7 @@ export class ContactSolver3 extends ContactSolver {
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
-          if (moved > change) change = moved;
+          if (moved > tolerance) change = moved;
           const la = ima * d2;
           const lb = imb * d2;
           vax -= la * patch[t2];
@@ -218,7 +224,7 @@ export class ContactSolver3 extends ContactSolver {
         // Applied one row after the other, as the general loop does.
         if (d1 !== 0) {
           const moved = Math.abs(d1) * K1;
-          if (moved > change) change = moved;
+          if (moved > tolerance) change = moved;
           const ga = fa * d1;
           const gb = fb * d1;
           wa0 -= ga * patch[w1 + 9];
@@ -244,11 +250,11 @@ export class ContactSolver3 extends ContactSolver {
       const old = lambdaN[cp];
       const nl = Math.max(0, old + (target[cp] - vn) / K);
       lambdaN[cp] = nl;
-      if (nl > maxLambda[cp]) maxLambda[cp] = nl;
+      if (bouncy && nl > maxLambda[cp]) maxLambda[cp] = nl;
       const dl = nl - old;
       if (dl === 0) continue;
       const moved = Math.abs(dl) * K;
-      if (moved > change) change = moved;
+      if (moved > tolerance) change = moved;
       const la = ima * dl;
       const lb = imb * dl;
       vax -= la * rows[rb];

@@ -142,6 +142,7 @@ export abstract class ContactSolver {
    * `restitution`), in the units of vn0 (the bounce sets the normal velocity to −e times it).
    */
   protected vnStop = new Float64Array(16);
+  /** Per point: the gap (the shared prepare sets it, and vn0, vnStop, bounceGap, only if e != 0). */
   protected sep = new Float64Array(16);
   /**
    * Per point: the largest gap from which it bounces in this sub-step: `penetrationSlop` for a
@@ -150,6 +151,7 @@ export abstract class ContactSolver {
    */
   protected bounceGap = new Float64Array(16);
   protected lambdaN = new Float64Array(16);
+  /** Per point: the largest normal impulse of the sub-step (read, and in 3D kept, only if e != 0). */
   protected maxLambda = new Float64Array(16);
 
   protected readonly constants = new Float64Array(7);
@@ -252,6 +254,11 @@ export abstract class ContactSolver {
     const rA = this.rA;
     const rB = this.rB;
     const centre = this.centre;
+    const bias = c[SOLVE_BIAS];
+    const slop = c[SOLVE_SLOP];
+    const normalImpulse = contacts.normalImpulse;
+    const patchTangent = contacts.patchTangent;
+    const patchTwist = contacts.patchTwist;
     this.mfCount = 0;
     this.cpCount = 0;
     for (let i = 0; i < contacts.count; i += 1) {
@@ -269,7 +276,14 @@ export abstract class ContactSolver {
       const b = sb.slotOf(B);
       this.ensureManifolds(this.mfCount + 1);
       this.ensurePoints(this.cpCount + count);
+      // The arrays in locals: the calls below (buildRow) would make each `this.` load again.
       const rows = this.rows;
+      const target = this.target;
+      const sep = this.sep;
+      const lambdaN = this.lambdaN;
+      const maxLambda = this.maxLambda;
+      const pts = man.points;
+      const seps = man.separations;
       const mf = this.mfCount++;
       this.mfContact[mf] = slot;
       this.mfA[mf] = a;
@@ -294,8 +308,12 @@ export abstract class ContactSolver {
         }
         t += 1;
       }
-      const xA = A.x;
-      const xB = B.x;
+      // The centres straight from the bodies' records (x first): the views A.x, B.x are two more
+      // objects, and cache lines, to load per manifold.
+      const xA = A.storage;
+      const xB = B.storage;
+      const oA = A.storageOffset;
+      const oB = B.storageOffset;
       const V = sb.v;
       const W = sb.w;
       const e = this.mfRestitution[mf];
@@ -320,9 +338,9 @@ export abstract class ContactSolver {
       for (let pq = 0; pq < count; pq += 1) {
         const cp = this.cpCount++;
         for (let d = 0; d < n; d += 1) {
-          const pd = man.points[pq * n + d];
-          rA[d] = pd - xA[d];
-          rB[d] = pd - xB[d];
+          const pd = pts[pq * n + d];
+          rA[d] = pd - xA[oA + d];
+          rB[d] = pd - xB[oB + d];
           centre[d] += pd;
         }
         const base = cp * RS;
@@ -343,7 +361,7 @@ export abstract class ContactSolver {
           // its slope half a sub-step later, −e·w_i + a·h/2. vn0 holds that value over −e (the
           // bounce's goal is −e·vn0) for a bounce now; vnStop the same for a bounce one sub-step
           // later, when a speculative row stops the body at the surface in this one.
-          const s = man.separations[pq];
+          const s = seps[pq];
           const w0 = vn - 0.5 * accel * h;
           const shift = (0.5 * accel * h) / e;
           const wNow = -Math.abs(w0);
@@ -353,18 +371,16 @@ export abstract class ContactSolver {
           // speculative contact stopped in the last sub-step (see ContactSet.approachSpeed).
           const recorded = contacts.approachSpeed[slot * P + pq];
           this.vn0[cp] = Math.min(vn < 0 ? wNow - shift : vn, recorded);
-          this.bounceGap[cp] = recorded < 0 ? c[SOLVE_SLOP] : 0;
-        } else {
-          this.bounceGap[cp] = 0;
-          this.vn0[cp] = 0;
-          this.vnStop[cp] = 0;
+          this.bounceGap[cp] = recorded < 0 ? slop : 0;
+          sep[cp] = s;
+          maxLambda[cp] = 0;
         }
+        // A pair with e = 0 leaves vn0, vnStop, bounceGap, sep and maxLambda as they are: only
+        // restitution and store read them, for a pair that bounces (streams less to write).
         // The velocity target of the point.
-        const s = man.separations[pq];
-        this.sep[cp] = s;
-        this.target[cp] = s > 0 ? -s / h : c[SOLVE_BIAS] * Math.max(0, -s - c[SOLVE_SLOP]);
-        this.maxLambda[cp] = 0;
-        this.lambdaN[cp] = warm ? contacts.normalImpulse[slot * P + pq] : 0;
+        const s = seps[pq];
+        target[cp] = s > 0 ? -s / h : bias * Math.max(0, -s - slop);
+        lambdaN[cp] = warm ? normalImpulse[slot * P + pq] : 0;
       }
       // The friction patch at the centroid of the points.
       for (let d = 0; d < n; d += 1) centre[d] /= count;
@@ -372,15 +388,15 @@ export abstract class ContactSolver {
       for (let pq = 0; pq < count; pq += 1) {
         let r2 = 0;
         for (let d = 0; d < n; d += 1) {
-          const e = man.points[pq * n + d] - centre[d];
+          const e = pts[pq * n + d] - centre[d];
           r2 += e * e;
         }
         radius += Math.sqrt(r2);
       }
       this.mfRadius[mf] = radius / count;
       for (let d = 0; d < n; d += 1) {
-        rA[d] = centre[d] - xA[d];
-        rB[d] = centre[d] - xB[d];
+        rA[d] = centre[d] - xA[oA + d];
+        rB[d] = centre[d] - xB[oB + d];
       }
       const patch = this.patchRows;
       const pb = mf * PR * RS;
@@ -390,7 +406,7 @@ export abstract class ContactSolver {
         let s2 = 0;
         for (let d = 0; d < n; d += 1) {
           patch[base + d] = tangents[t * n + d];
-          s2 += contacts.patchTangent[ti + d] * tangents[t * n + d];
+          s2 += patchTangent[ti + d] * tangents[t * n + d];
         }
         this.buildRow(patch, base, a, b, sb);
         this.lambdaP[mf * m + t] = warm ? s2 : 0;
@@ -401,7 +417,7 @@ export abstract class ContactSolver {
           const base = pb + (m + w) * RS;
           this.buildTwistRow(patch, base, t1, t2, a, b, sb);
           let s2 = 0;
-          for (let pl = 0; pl < k; pl += 1) s2 += contacts.patchTwist[wi + pl] * patch[base + n + pl];
+          for (let pl = 0; pl < k; pl += 1) s2 += patchTwist[wi + pl] * patch[base + n + pl];
           // A patch of one point (R = 0) has no twist friction: nothing of an older patch's twist
           // may be warm-started into it, since no pass would ever clamp it again.
           this.lambdaW[mf * q + w] = warm && radius > 0 ? s2 : 0;
@@ -810,11 +826,13 @@ export abstract class ContactSolver {
       const slot = this.mfContact[mf];
       const first = this.mfFirst[mf];
       const count = this.mfPoints[mf];
+      const bouncy = this.mfRestitution[mf] !== 0;
       for (let pq = 0; pq < count; pq += 1) {
         const cp = first + pq;
         const ni = slot * P + pq;
         contacts.normalImpulse[ni] = shocked ? Math.max(0, this.lambdaN[cp] - this.keptN[cp]) : this.lambdaN[cp];
-        contacts.approachSpeed[ni] = this.sep[cp] > this.bounceGap[cp] && this.maxLambda[cp] > 0 ? this.vnStop[cp] : 0;
+        // (prepare leaves vnStop and bounceGap unset for e = 0: no speculative bounce to record)
+        contacts.approachSpeed[ni] = bouncy && this.sep[cp] > this.bounceGap[cp] && this.maxLambda[cp] > 0 ? this.vnStop[cp] : 0;
       }
       // The patch as a world vector and a world bivector: they survive a change of tangent basis.
       const pb = mf * PR * RS;

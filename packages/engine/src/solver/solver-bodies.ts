@@ -14,8 +14,7 @@
  * @module
  */
 import type { Dims } from '@physin/algebra';
-import type { Body } from '../body.js';
-import { MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
+import { Body, MOTION_DYNAMIC, MOTION_STATIC } from '../body.js';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 
 /** Flat per-slot solver state of one sub-step. */
@@ -82,12 +81,14 @@ export class SolverBodies {
     if (s * n + n > this.v.length) this.grow(s + 1);
     this.bodies[s] = body;
     body.solverSlot = s;
-    const bv = body.v;
-    const bw = body.w;
-    for (let i = 0; i < n; i += 1) this.v[s * n + i] = bv[i];
+    // v and ω straight from the body's record (x, R, v, L, ω, ...): its views are more objects to load.
+    const rec = body.storage;
+    const v = body.storageOffset + Body.velocityOffset(this.D);
+    const w = v + n + k;
+    for (let i = 0; i < n; i += 1) this.v[s * n + i] = rec[v + i];
     for (let p = 0; p < k; p += 1) {
-      this.w[s * k + p] = bw[p];
-      this.w0[s * k + p] = bw[p];
+      this.w[s * k + p] = rec[w + p];
+      this.w0[s * k + p] = rec[w + p];
     }
     const kk = k * k;
     if (body.motion === MOTION_DYNAMIC) {
@@ -129,12 +130,14 @@ export class SolverBodies {
     let iso = true;
     for (let q = 1; q < k; q += 1) if (inv[q] !== inv[0] || I[q] !== I[0]) iso = false;
     if (iso) {
-      // Q diag(s) Qᵀ = s·QQᵀ = s·identity: no rotation needed.
-      out.fill(0, at, at + k * k);
-      outI.fill(0, at, at + k * k);
+      // Q diag(s) Qᵀ = s·QQᵀ = s·identity: no rotation needed. (A loop: fill is a call per body.)
+      const s = inv[0];
+      const t = I[0];
       for (let r = 0; r < k; r += 1) {
-        out[at + r * k + r] = inv[0];
-        outI[at + r * k + r] = I[0];
+        for (let c = 0; c < k; c += 1) {
+          out[at + r * k + c] = r === c ? s : 0;
+          outI[at + r * k + c] = r === c ? t : 0;
+        }
       }
       this.isoInvInertia[slot] = inv[0];
       return;
@@ -177,8 +180,9 @@ export class SolverBodies {
     for (let s = 1; s < this.count; s += 1) {
       const body = this.bodies[s]!;
       if (body.motion !== MOTION_DYNAMIC) continue;
-      const bv = body.v;
-      for (let i = 0; i < n; i += 1) bv[i] = this.v[s * n + i];
+      const rec = body.storage;
+      const v = body.storageOffset + Body.velocityOffset(this.D);
+      for (let i = 0; i < n; i += 1) rec[v + i] = this.v[s * n + i];
       let changed = false;
       for (let p = 0; p < k; p += 1) if (this.w[s * k + p] !== this.w0[s * k + p]) changed = true;
       if (!changed) continue;

@@ -17,18 +17,10 @@ import type {
 import { shapeKind } from './shape-kind.js';
 
 /**
- * @internal The bounds of a posed shape (the signature of {@link computeBoundsUnchecked}): what a
- * torus, mesh or capsule attaches as its `bounds` for {@link computeBoundsCommon}.
+ * The bounds of a posed shape: the signature of {@link computeBounds}, and of the kernels that skip
+ * its checks (what a torus, mesh or capsule attaches as its `bounds` for {@link computeBoundsCommon}).
  */
-export type ShapeBounds = (
-  outMin: Float64Array,
-  outMax: Float64Array,
-  n: number,
-  shape: QueryShape,
-  x: ArrayLike<number>,
-  M: ArrayLike<number>,
-  margin: number,
-) => Float64Array;
+export type ShapeBounds = typeof computeBounds;
 
 /**
  * Writes the world bounding box of `shape` placed at pose (x, M), grown by `margin` on every
@@ -76,15 +68,7 @@ export function computeBounds(
  * validated when the body entered the world. Allocates nothing. (The kind is read through
  * {@link shapeKind}, so the number fields of each kind load unboxed; see shape-kind.ts.)
  */
-export function computeBoundsUnchecked(
-  outMin: Float64Array,
-  outMax: Float64Array,
-  n: number,
-  shape: QueryShape,
-  x: ArrayLike<number>,
-  M: ArrayLike<number>,
-  margin: number,
-): Float64Array {
+export const computeBoundsUnchecked: ShapeBounds = function computeBoundsUnchecked(outMin, outMax, n, shape, x, M, margin) {
   switch (shapeKind(shape)) {
     case 'torus': {
       const torus = shape as TorusGeometry;
@@ -141,7 +125,7 @@ export function computeBoundsUnchecked(
       // A compound has no bounds of its own: each of its parts is placed as a shape of its own.
       throw new TypeError(`computeBounds: a '${String(shapeKind(shape))}' shape has no bounds of its own`);
   }
-}
+};
 
 /**
  * The bounds a world asks for each step: {@link computeBoundsUnchecked} for a box, a ball or a
@@ -149,15 +133,7 @@ export function computeBoundsUnchecked(
  * and HyperCapsule attach computeBoundsUnchecked), so a world of boxes carries none of the torus,
  * mesh or capsule code. The same bits as computeBoundsUnchecked; allocates nothing.
  */
-export function computeBoundsCommon(
-  outMin: Float64Array,
-  outMax: Float64Array,
-  n: number,
-  shape: QueryShape,
-  x: ArrayLike<number>,
-  M: ArrayLike<number>,
-  margin: number,
-): Float64Array {
+export const computeBoundsCommon: ShapeBounds = function computeBoundsCommon(outMin, outMax, n, shape, x, M, margin) {
   switch (shapeKind(shape)) {
     case 'box': {
       const a = (shape as BoxGeometry).halfExtents;
@@ -189,7 +165,7 @@ export function computeBoundsCommon(
       return own(outMin, outMax, n, shape, x, M, margin);
     }
   }
-}
+};
 
 /** Bounds of a posed half-space: infinite except along an axis its world normal is exactly. */
 function halfSpaceBounds(

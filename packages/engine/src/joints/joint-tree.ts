@@ -91,7 +91,8 @@ export class JointTree {
   private piv = new Int32Array(64);
   /** 1 / d_j of the LDLᵀ nodes, at the node's offset in the vectors (the solves multiply). */
   private rdiag = new Float64Array(64);
-  private col: Float64Array;
+  /** One row's Ċ, from JointSolver.rowVelocityOf (the right-hand side of a velocity solve). */
+  private readonly rowSpeed = new Float64Array(1);
   private hblk = new Float64Array(64);
   /** The tree bodies' v and ω after the last `passVelocities` solve (bs per body node). */
   private saved = new Float64Array(64);
@@ -113,7 +114,6 @@ export class JointTree {
     this.n = D.n;
     this.k = D.k;
     this.bs = D.n + D.k;
-    this.col = new Float64Array(64);
   }
 
   /**
@@ -580,9 +580,9 @@ export class JointTree {
     const ldl = this.nLdl;
     let maxSize = 0;
     for (let i = 0; i < N; i += 1) if (size[i] > maxSize) maxSize = size[i];
-    this.col = growFloat64(this.col, maxSize, 0);
     if (this.hblk.length < maxSize * maxSize) this.hblk = growFloat64(this.hblk, maxSize * maxSize, 0);
     const H = this.hblk;
+    const mat = this.mat;
     for (let o = 0; o < N; o += 1) {
       const i = order[o];
       const s = size[i];
@@ -598,7 +598,6 @@ export class JointTree {
       const slot = jointIsChild ? ref[p] : ref[i];
       // H_ip (s × sp) once, then W_i = D_i⁻¹ H_ip column by column and D_p −= H_ipᵀ W_i.
       this.couplingBlock(js, j, slot, jointIsChild ? 1 : 0, s, sp, H);
-      const mat = this.mat;
       for (let q = 0; q < s * sp; q += 1) mat[w0 + q] = H[q];
       if (ldl[i] === 1) this.ldlSolveColumns(nD[i], s, mat, w0, sp, nV[i]);
       else this.luSolveColumns(nD[i], s, this.nPiv[i], mat, w0, sp);
@@ -675,7 +674,7 @@ export class JointTree {
   private rhs(js: JointSolver, sb: SolverBodies, positions: number): void {
     const vec = this.vec;
     const bs = this.bs;
-    const scratch = this.col;
+    const scratch = this.rowSpeed;
     for (let i = 0; i < this.nodeCount; i += 1) {
       const v0 = this.nV[i];
       if (this.nKind[i] === 1) {

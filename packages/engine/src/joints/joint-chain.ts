@@ -1,0 +1,476 @@
+/**
+ * The joint-space solve of the rigid joints that form chains (see docs/joints.md, "Chains in joint
+ * space"): where every component of the joint forest is a path (each dynamic body has at most two
+ * tree joints) of 3-row joints in 3D (point joints), the system the forest solves,
+ *
+ * ```
+ * A Δλ = c,   A = J M̃⁻¹ Jᵀ,   Δv = M̃⁻¹ Jᵀ Δλ
+ * ```
+ *
+ * (M̃: the mass matrix with the geometric stiffness on its angular blocks, as in `JointTree`), is
+ * block-tridiagonal in 3 × 3 blocks when the joints are taken along the path: joint p couples
+ * only to the joints before and after it, through the body they share. Its block LDLᵀ then has
+ * no fill-in either, and its blocks are a third of the size of the body + joint nodes of the
+ * tree's KKT system (3 × 3 against 6–9 square): the factorisation is about five times cheaper
+ * and meets the rows as exactly (to rounding).
+ *
+ * A pivot block that is not clearly positive definite (redundant or ill-conditioned rows: two
+ * joints pinning the same point) fails the factorisation, and `JointTree` factors and solves
+ * the forest itself for that factorisation (its LU drops the redundant rows).
+ *
+ * @module
+ */
+import type { Dims } from '@physin/algebra';
+import { growFloat64, growInt32 } from '../contacts/contact-set.js';
+import type { SolverBodies } from '../solver/solver-bodies.js';
+import type { JointSolver } from './joint-solver.js';
+
+/**
+ * A leading pivot of a block D_p at most this fraction of the largest diagonal entry of its
+ * A_pp is not clearly positive (the tree's LDL_TOLERANCE): the factorisation fails.
+ */
+const CHAIN_TOLERANCE = 1e-8;
+
+/**
+ * |λ| · |J_angular| of joint j's equality rows on the body in `slot` (N·s·m): the size of the
+ * torque the joint's last impulse exerts per radian the body turns (times h). λ is the impulse
+ * the joint kept from its last solve (`Joint.lambda`).
+ * @internal
+ */
+export function geometricLoad(js: JointSolver, j: number, slot: number): number {
+  const first = js.jFirst[j];
+  const m = js.jBlock[j];
+  const off = js.jB[j] === slot ? js.OFF_JB : js.OFF_JA;
+  const lam = js.joints[j].lambda;
+  const rows = js.rows;
+  const k = js.k;
+  let l2 = 0;
+  let a2 = 0;
+  for (let r = 0; r < m; r += 1) {
+    const q = first + r;
+    const l = lam[js.rowKey[q]];
+    l2 += l * l;
+    const base = q * js.RS + off;
+    for (let p = 0; p < k; p += 1) a2 += rows[base + p] * rows[base + p];
+  }
+  return Math.sqrt(l2 * a2);
+}
+
+/**
+ * The chains of a joint forest in joint space, built by `JointTree.build` when the forest is
+ * made of chains, factored and solved in its place.
+ * @internal
+ */
+export class JointChain {
+  /** Joints in path order, component after component. */
+  count = 0;
+  /** Per joint (solver index): 1 once placed on a path (`build`). */
+  private seen = new Int32Array(16);
+  /** Per position: the joint (solver index). */
+  pJoint = new Int32Array(16);
+  /** Per position: 1 when it shares a body with the position before (its block couples). */
+  private pLink = new Int32Array(16);
+  /** Per position: the side (0: A, 1: B) of the shared body, of this joint and of the one before. */
+  private pSide = new Int32Array(16);
+  private pPrevSide = new Int32Array(16);
+  /** Per position and side (2p + side): the tree's body node, −1 for no dynamic body. */
+  private sNode = new Int32Array(32);
+  /** M̃⁻¹ Gᵀ per position and side: 6 × 3 (row-major), G the side's signed Jacobian (3 × 6). */
+  private U = new Float64Array(32 * 18);
+  /** Per position: the coupling block A_p,p−1 (3 × 3). */
+  private off = new Float64Array(16 * 9);
+  /** Per position: L_p (3 × 3). */
+  private L = new Float64Array(16 * 9);
+  /** Per position: D_p⁻¹. */
+  private Dinv = new Float64Array(16 * 9);
+  /** Per body node: 1/m and the angular M̃⁻¹ (3 × 3). */
+  private bodyInv = new Float64Array(16 * 10);
+  /** Per body node: Σ|λ||J_angular| over its joints (the geometric stiffness before its scale). */
+  private bodyG = new Float64Array(16);
+  /** Per body node: the Δv and Δω of a solve. */
+  acc = new Float64Array(16 * 6);
+  /** The right-hand side, then the solution Δλ (3 per position). */
+  vec = new Float64Array(48);
+  /** The pivot block D_p being factored (its upper triangle). */
+  private readonly blk = new Float64Array(9);
+  /** The signed Jacobians (3 × 6) of the two sides of the position being factored. */
+  private readonly G = new Float64Array(36);
+  /** The scale of the geometric stiffness for the next `factor` (`JointTree.stiffness`). */
+  stiffness = 0;
+  /** Count of dimensions (the chains are taken in 3D only). */
+  private readonly n: number;
+
+  constructor(D: Dims) {
+    this.n = D.n;
+  }
+
+  /**
+   * Orders the forest's joints along its paths. Returns 1 when the forest is made of chains
+   * this solver takes (3D, 3-row joints, at most two tree joints per body), else 0.
+   * `adjHead`/`fold` list each body node's joint nodes and folded joints (see `JointTree`).
+   */
+  build(
+    js: JointSolver,
+    role: Int32Array,
+    bodyNodes: number,
+    slotNode: Int32Array,
+    nRef: Int32Array,
+    adjHead: Int32Array,
+    adjNext: Int32Array,
+    adjJoint: Int32Array,
+    fold: Int32Array,
+    foldNext: Int32Array,
+  ): number {
+    this.count = 0;
+    if (this.n !== 3) return 0;
+    const count = js.count;
+    let tree = 0;
+    for (let j = 0; j < count; j += 1) {
+      if (role[j] === 0) continue;
+      if (js.jBlock[j] !== 3) return 0;
+      tree += 1;
+    }
+    for (let i = 0; i < bodyNodes; i += 1) {
+      let deg = 0;
+      for (let ed = adjHead[i]; ed >= 0; ed = adjNext[ed]) deg += 1;
+      for (let j = fold[i]; j >= 0; j = foldNext[j]) deg += 1;
+      if (deg > 2) return 0;
+    }
+    this.grow(tree, bodyNodes);
+    this.seen = growInt32(this.seen, count, 0);
+    const seen = this.seen;
+    for (let j = 0; j < count; j += 1) seen[j] = 0;
+    let P = 0;
+    // Each path from one of its ends.
+    for (let j0 = 0; j0 < count; j0 += 1) {
+      if (role[j0] === 0 || seen[j0] !== 0) continue;
+      // An end: at most one side's body has another tree joint.
+      let ends = 0;
+      for (let side = 0; side < 2; side += 1) {
+        const b = slotNode[side === 0 ? js.jA[j0] : js.jB[j0]];
+        if (b >= 0 && this.other(b, j0, nRef, adjHead, adjNext, adjJoint, fold, foldNext) >= 0) ends += 1;
+      }
+      if (ends > 1) continue;
+      let cur = j0;
+      let prev = -1; // the body node shared with the joint before
+      let prevJ = -1;
+      while (cur >= 0 && seen[cur] === 0) {
+        seen[cur] = 1;
+        this.pJoint[P] = cur;
+        this.pLink[P] = prev >= 0 ? 1 : 0;
+        const nA = slotNode[js.jA[cur]];
+        const nB = slotNode[js.jB[cur]];
+        this.sNode[2 * P] = js.jA[cur] > 0 ? nA : -1;
+        this.sNode[2 * P + 1] = js.jB[cur] > 0 ? nB : -1;
+        if (prev >= 0) {
+          this.pSide[P] = nB === prev ? 1 : 0;
+          this.pPrevSide[P] = slotNode[js.jB[prevJ]] === prev ? 1 : 0;
+        }
+        P += 1;
+        let next = -1;
+        let via = -1;
+        for (let side = 0; side < 2 && next < 0; side += 1) {
+          const b = side === 0 ? nA : nB;
+          if (b < 0 || b === prev) continue;
+          const o = this.other(b, cur, nRef, adjHead, adjNext, adjJoint, fold, foldNext);
+          if (o >= 0 && seen[o] === 0) {
+            next = o;
+            via = b;
+          }
+        }
+        prevJ = cur;
+        prev = via;
+        cur = next;
+      }
+    }
+    if (P !== tree) return 0; // a cycle of joints (not in a forest): the tree decides
+    this.count = P;
+    return 1;
+  }
+
+  /** The tree joint of body node b other than j, or −1. */
+  private other(
+    b: number,
+    j: number,
+    nRef: Int32Array,
+    adjHead: Int32Array,
+    adjNext: Int32Array,
+    adjJoint: Int32Array,
+    fold: Int32Array,
+    foldNext: Int32Array,
+  ): number {
+    for (let ed = adjHead[b]; ed >= 0; ed = adjNext[ed]) {
+      const o = nRef[adjJoint[ed]];
+      if (o !== j) return o;
+    }
+    for (let o = fold[b]; o >= 0; o = foldNext[o]) if (o !== j) return o;
+    return -1;
+  }
+
+  private grow(P: number, bodies: number): void {
+    this.pJoint = growInt32(this.pJoint, P, 0);
+    this.pLink = growInt32(this.pLink, P, 0);
+    this.pSide = growInt32(this.pSide, P, 0);
+    this.pPrevSide = growInt32(this.pPrevSide, P, 0);
+    this.sNode = growInt32(this.sNode, 2 * P, 0);
+    this.U = growFloat64(this.U, 36 * P, 0);
+    this.off = growFloat64(this.off, 9 * P, 0);
+    this.L = growFloat64(this.L, 9 * P, 0);
+    this.Dinv = growFloat64(this.Dinv, 9 * P, 0);
+    this.vec = growFloat64(this.vec, 3 * P, 0);
+    this.bodyInv = growFloat64(this.bodyInv, 10 * bodies, 0);
+    this.bodyG = growFloat64(this.bodyG, bodies, 0);
+    this.acc = growFloat64(this.acc, 6 * bodies, 0);
+  }
+
+  /**
+   * Assembles A's blocks from the rows and the bodies' inverse mass and inertia (with the
+   * geometric stiffness `stiffness`·Σ|λ||J_angular| on the angular diagonal of M̃)
+   * and factors A = L D Lᵀ along each path. Returns 1, or 0 when a pivot block is not clearly
+   * positive definite (the caller falls back to the tree).
+   */
+  factor(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
+    const P = this.count;
+    const stiffness = this.stiffness;
+    const rows = js.rows;
+    const RS = js.RS;
+    const bi = this.bodyInv;
+    const g = this.bodyG;
+    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
+    if (stiffness > 0) {
+      for (let p = 0; p < P; p += 1) {
+        const j = this.pJoint[p];
+        const nA = this.sNode[2 * p];
+        const nB = this.sNode[2 * p + 1];
+        if (nA >= 0) g[nA] += geometricLoad(js, j, js.jA[j]);
+        if (nB >= 0) g[nB] += geometricLoad(js, j, js.jB[j]);
+      }
+    }
+    for (let i = 0; i < bodyNodes; i += 1) {
+      const slot = nRef[i];
+      const o = 10 * i;
+      bi[o] = sb.invMass[slot];
+      const gi = g[i] * stiffness;
+      if (gi > 0) {
+        // (I_world + g·1)⁻¹ by its cofactors (symmetric positive definite).
+        const I = sb.inertia;
+        const q = slot * 9;
+        const a0 = I[q] + gi;
+        const a1 = I[q + 1];
+        const a2 = I[q + 2];
+        const a3 = I[q + 3];
+        const a4 = I[q + 4] + gi;
+        const a5 = I[q + 5];
+        const a6 = I[q + 6];
+        const a7 = I[q + 7];
+        const a8 = I[q + 8] + gi;
+        const c0 = a4 * a8 - a5 * a7;
+        const c1 = a5 * a6 - a3 * a8;
+        const c2 = a3 * a7 - a4 * a6;
+        const id = 1 / (a0 * c0 + a1 * c1 + a2 * c2);
+        bi[o + 1] = c0 * id;
+        bi[o + 2] = (a2 * a7 - a1 * a8) * id;
+        bi[o + 3] = (a1 * a5 - a2 * a4) * id;
+        bi[o + 4] = c1 * id;
+        bi[o + 5] = (a0 * a8 - a2 * a6) * id;
+        bi[o + 6] = (a2 * a3 - a0 * a5) * id;
+        bi[o + 7] = c2 * id;
+        bi[o + 8] = (a1 * a6 - a0 * a7) * id;
+        bi[o + 9] = (a0 * a4 - a1 * a3) * id;
+      } else {
+        const II = sb.invInertia;
+        for (let q = 0, s = slot * 9; q < 9; q += 1) bi[o + 1 + q] = II[s + q];
+      }
+    }
+    const U = this.U;
+    const D = this.blk;
+    const off = this.off;
+    const L = this.L;
+    const Dinv = this.Dinv;
+    const G = this.G;
+    for (let p = 0; p < P; p += 1) {
+      const first = js.jFirst[this.pJoint[p]];
+      for (let q = 0; q < 9; q += 1) D[q] = 0;
+      // For each side: its signed Jacobian G (3 × 6) into G, U = M̃⁻¹ Gᵀ, and A_pp += G U (symmetric).
+      for (let side = 0; side < 2; side += 1) {
+        const node = this.sNode[2 * p + side];
+        if (node < 0) continue;
+        const sg = side === 1 ? 1 : -1;
+        const oj = side === 1 ? js.OFF_JB : js.OFF_JA;
+        const u0 = (2 * p + side) * 18;
+        const g0 = side * 18;
+        const b0 = 10 * node;
+        const im = bi[b0];
+        const i0 = bi[b0 + 1];
+        const i1 = bi[b0 + 2];
+        const i2 = bi[b0 + 3];
+        const i3 = bi[b0 + 4];
+        const i4 = bi[b0 + 5];
+        const i5 = bi[b0 + 6];
+        const i6 = bi[b0 + 7];
+        const i7 = bi[b0 + 8];
+        const i8 = bi[b0 + 9];
+        for (let r = 0; r < 3; r += 1) {
+          const base = (first + r) * RS;
+          const jb = base + oj;
+          const x0 = sg * rows[base];
+          const x1 = sg * rows[base + 1];
+          const x2 = sg * rows[base + 2];
+          const j0 = sg * rows[jb];
+          const j1 = sg * rows[jb + 1];
+          const j2 = sg * rows[jb + 2];
+          const gr = g0 + 6 * r;
+          G[gr] = x0;
+          G[gr + 1] = x1;
+          G[gr + 2] = x2;
+          G[gr + 3] = j0;
+          G[gr + 4] = j1;
+          G[gr + 5] = j2;
+          U[u0 + r] = x0 * im;
+          U[u0 + 3 + r] = x1 * im;
+          U[u0 + 6 + r] = x2 * im;
+          U[u0 + 9 + r] = i0 * j0 + i1 * j1 + i2 * j2;
+          U[u0 + 12 + r] = i3 * j0 + i4 * j1 + i5 * j2;
+          U[u0 + 15 + r] = i6 * j0 + i7 * j1 + i8 * j2;
+        }
+        // The upper triangle (the check and the inverse below read no other).
+        for (let r = 0; r < 3; r += 1) {
+          const g = g0 + 6 * r;
+          for (let c = r; c < 3; c += 1) {
+            D[3 * r + c] +=
+              G[g] * U[u0 + c] +
+              G[g + 1] * U[u0 + 3 + c] +
+              G[g + 2] * U[u0 + 6 + c] +
+              G[g + 3] * U[u0 + 9 + c] +
+              G[g + 4] * U[u0 + 12 + c] +
+              G[g + 5] * U[u0 + 15 + c];
+          }
+        }
+      }
+      let big = D[0];
+      if (D[4] > big) big = D[4];
+      if (D[8] > big) big = D[8];
+      const o9 = 9 * p;
+      if (this.pLink[p] === 1) {
+        // A_p,p−1 = G_p(b) U_p−1(b) over the shared body b (off), L_p = off · D_p−1⁻¹, and
+        // D_p = A_pp − L_p offᵀ.
+        const g0 = 18 * this.pSide[p];
+        const u0 = (2 * (p - 1) + this.pPrevSide[p]) * 18;
+        for (let r = 0; r < 3; r += 1) {
+          const g = g0 + 6 * r;
+          for (let c = 0; c < 3; c += 1) {
+            off[o9 + 3 * r + c] =
+              G[g] * U[u0 + c] +
+              G[g + 1] * U[u0 + 3 + c] +
+              G[g + 2] * U[u0 + 6 + c] +
+              G[g + 3] * U[u0 + 9 + c] +
+              G[g + 4] * U[u0 + 12 + c] +
+              G[g + 5] * U[u0 + 15 + c];
+          }
+        }
+        const d9 = o9 - 9;
+        for (let r = 0; r < 3; r += 1) {
+          const f0 = off[o9 + 3 * r];
+          const f1 = off[o9 + 3 * r + 1];
+          const f2 = off[o9 + 3 * r + 2];
+          for (let c = 0; c < 3; c += 1) L[o9 + 3 * r + c] = f0 * Dinv[d9 + c] + f1 * Dinv[d9 + 3 + c] + f2 * Dinv[d9 + 6 + c];
+        }
+        for (let r = 0; r < 3; r += 1) {
+          const l0 = L[o9 + 3 * r];
+          const l1 = L[o9 + 3 * r + 1];
+          const l2 = L[o9 + 3 * r + 2];
+          for (let c = r; c < 3; c += 1)
+            D[3 * r + c] -= l0 * off[o9 + 3 * c] + l1 * off[o9 + 3 * c + 1] + l2 * off[o9 + 3 * c + 2];
+        }
+      }
+      // D_p symmetric positive definite, its leading pivots clearly so, and D_p⁻¹ by cofactors.
+      const a0 = D[0];
+      const a4 = D[4];
+      const a8 = D[8];
+      const a1 = D[1];
+      const a2 = D[2];
+      const a5 = D[5];
+      const tol = big * CHAIN_TOLERANCE;
+      const m2 = a0 * a4 - a1 * a1;
+      const c0 = a4 * a8 - a5 * a5;
+      const c1 = a5 * a2 - a1 * a8;
+      const c2 = a1 * a5 - a4 * a2;
+      const det = a0 * c0 + a1 * c1 + a2 * c2;
+      if (!(a0 > tol) || !(m2 > tol * a0) || !(det > tol * m2)) return 0;
+      const id = 1 / det;
+      Dinv[o9] = c0 * id;
+      Dinv[o9 + 1] = c1 * id;
+      Dinv[o9 + 2] = c2 * id;
+      Dinv[o9 + 3] = c1 * id;
+      Dinv[o9 + 4] = (a0 * a8 - a2 * a2) * id;
+      Dinv[o9 + 5] = (a2 * a1 - a0 * a5) * id;
+      Dinv[o9 + 6] = c2 * id;
+      Dinv[o9 + 7] = (a2 * a1 - a0 * a5) * id;
+      Dinv[o9 + 8] = m2 * id;
+    }
+    return 1;
+  }
+
+  /**
+   * Solves A Δλ = c with c in `vec` (3 per position), leaving Δλ there, and sums each body
+   * node's M̃⁻¹ Jᵀ Δλ into `acc` (6 per body node, of `bodyNodes`).
+   */
+  solve(bodyNodes: number): void {
+    const P = this.count;
+    const x = this.vec;
+    const L = this.L;
+    const Dinv = this.Dinv;
+    const link = this.pLink;
+    // L z = c.
+    for (let p = 1; p < P; p += 1) {
+      if (link[p] === 0) continue;
+      const o = 9 * p;
+      const v = 3 * p;
+      const z0 = x[v - 3];
+      const z1 = x[v - 2];
+      const z2 = x[v - 1];
+      x[v] -= L[o] * z0 + L[o + 1] * z1 + L[o + 2] * z2;
+      x[v + 1] -= L[o + 3] * z0 + L[o + 4] * z1 + L[o + 5] * z2;
+      x[v + 2] -= L[o + 6] * z0 + L[o + 7] * z1 + L[o + 8] * z2;
+    }
+    // w = D⁻¹ z.
+    for (let p = 0; p < P; p += 1) {
+      const o = 9 * p;
+      const v = 3 * p;
+      const a = x[v];
+      const b = x[v + 1];
+      const c = x[v + 2];
+      x[v] = Dinv[o] * a + Dinv[o + 1] * b + Dinv[o + 2] * c;
+      x[v + 1] = Dinv[o + 3] * a + Dinv[o + 4] * b + Dinv[o + 5] * c;
+      x[v + 2] = Dinv[o + 6] * a + Dinv[o + 7] * b + Dinv[o + 8] * c;
+    }
+    // Lᵀ x = w.
+    for (let p = P - 1; p >= 1; p -= 1) {
+      if (link[p] === 0) continue;
+      const o = 9 * p;
+      const v = 3 * p;
+      const y0 = x[v];
+      const y1 = x[v + 1];
+      const y2 = x[v + 2];
+      x[v - 3] -= L[o] * y0 + L[o + 3] * y1 + L[o + 6] * y2;
+      x[v - 2] -= L[o + 1] * y0 + L[o + 4] * y1 + L[o + 7] * y2;
+      x[v - 1] -= L[o + 2] * y0 + L[o + 5] * y1 + L[o + 8] * y2;
+    }
+    // Δv = M̃⁻¹ Jᵀ Δλ per body.
+    const acc = this.acc;
+    for (let q = 0; q < 6 * bodyNodes; q += 1) acc[q] = 0;
+    const U = this.U;
+    for (let p = 0; p < P; p += 1) {
+      const l0 = x[3 * p];
+      const l1 = x[3 * p + 1];
+      const l2 = x[3 * p + 2];
+      for (let side = 0; side < 2; side += 1) {
+        const node = this.sNode[2 * p + side];
+        if (node < 0) continue;
+        const u0 = (2 * p + side) * 18;
+        const a0 = 6 * node;
+        for (let e = 0; e < 6; e += 1) acc[a0 + e] += U[u0 + 3 * e] * l0 + U[u0 + 3 * e + 1] * l1 + U[u0 + 3 * e + 2] * l2;
+      }
+    }
+  }
+}

@@ -830,7 +830,7 @@ export class JointTree {
 
   /**
    * The solve of `solveVelocities` (`positions` 0) or `solvePositions` (1) by the chain's
-   * factorisation: Δλ from A Δλ = c, λ += Δλ, and each body moved by M̃⁻¹ Jᵀ Δλ.
+   * factorisation: Δλ from A Δλ = c, each body moved by M̃⁻¹ Jᵀ Δλ, and (velocities) λ += Δλ.
    */
   private chainSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
     const chain = this.chain;
@@ -870,15 +870,9 @@ export class JointTree {
     }
     const B = this.bodyNodes;
     chain.solve(B);
-    const lambda = js.lambdaRow;
-    for (let p = 0; p < P; p += 1) {
-      const first = js.jFirst[chain.pJoint[p]];
-      lambda[first] += vec[3 * p];
-      lambda[first + 1] += vec[3 * p + 1];
-      lambda[first + 2] += vec[3 * p + 2];
-    }
     const acc = chain.acc;
     if (positions === 1) {
+      // A projection moves the poses only: its Δλ is no impulse (as the tree's `solvePositions`).
       const dx = js.pA;
       const dθ = js.ja;
       for (let i = 0; i < B; i += 1) {
@@ -890,6 +884,13 @@ export class JointTree {
         js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
       }
       return;
+    }
+    const lambda = js.lambdaRow;
+    for (let p = 0; p < P; p += 1) {
+      const first = js.jFirst[chain.pJoint[p]];
+      lambda[first] += vec[3 * p];
+      lambda[first + 1] += vec[3 * p + 1];
+      lambda[first + 2] += vec[3 * p + 2];
     }
     for (let i = 0; i < B; i += 1) {
       const slot = this.nRef[i];

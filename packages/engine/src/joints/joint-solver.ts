@@ -316,10 +316,13 @@ export class JointSolver {
       this.jBlock[j] = 0;
       this.jRows[j] = 0;
       joint.buildRows(this, j);
-      this.finishJoint(sb, j, warm);
+      this.finishJoint(j, warm);
     }
     this.prepRows = this.rowCount;
     const inTree = this.count > 0 ? this.tree.build(this, sb) : 0;
+    // I⁻¹J and the effective masses of the rows a pass reads: a tree joint's equality rows are
+    // the tree's, which reads neither (nor does its warm start, which skips them).
+    for (let j = 0; j < this.count; j += 1) this.rowMasses(sb, j, this.tree.role[j] === 0 ? 0 : this.jBlock[j]);
     this.factorBlocks(sb);
     if (inTree > 0) {
       this.tree.stiffness = h;
@@ -406,15 +409,14 @@ export class JointSolver {
   }
 
   /**
-   * I⁻¹J and the effective masses of joint j's rows, the Cholesky factor of its block, the bias
-   * of each row and the warm-start impulses.
+   * The bias of each of joint j's rows and the warm-start impulses (I⁻¹J and the effective masses
+   * follow the tree's build, in `prepare`).
    */
-  private finishJoint(sb: SolverBodies, j: number, warm: boolean): void {
+  private finishJoint(j: number, warm: boolean): void {
     const RS = this.RS;
     const first = this.jFirst[j];
     const count = this.jRows[j];
     const rows = this.rows;
-    this.rowMasses(sb, j);
     // Softness of this joint in this sub-step.
     const joint = this.joints[j];
     const st = joint.state;
@@ -506,8 +508,11 @@ export class JointSolver {
     }
   }
 
-  /** I⁻¹J of joint j's rows and the effective mass of each (1 / J M⁻¹ Jᵀ, 0 if it cannot move). */
-  private rowMasses(sb: SolverBodies, j: number): void {
+  /**
+   * I⁻¹J of joint j's rows from its row `skip` on and the effective mass of each (1 / J M⁻¹ Jᵀ, 0
+   * if it cannot move).
+   */
+  private rowMasses(sb: SolverBodies, j: number, skip = 0): void {
     const { n, k, RS } = this;
     const a = this.jA[j];
     const b = this.jB[j];
@@ -523,7 +528,7 @@ export class JointSolver {
     const OFF_JB = this.OFF_JB;
     const OFF_MA = this.OFF_MA;
     const OFF_MB = this.OFF_MB;
-    for (let q = first; q < first + count; q += 1) {
+    for (let q = first + skip; q < first + count; q += 1) {
       const base = q * RS;
       let K = 0;
       for (let d = 0; d < n; d += 1) K += rows[base + d] * rows[base + d];

@@ -19,30 +19,24 @@
  * - every scene gives the same bits in two runs.
  */
 import { describe, expect, it } from 'vitest';
-import { Body, HyperSphere, PointJoint } from '@physin/engine';
-import type { World } from '@physin/engine';
+import { Body, HyperSphere } from '@physin/engine';
 import { makeWorld } from './support/scenes.js';
-import { buildChain, pointJointError, runChain, snapshot } from './support/joints.js';
+import { buildChain, pointJointScene, runChain, snapshot } from './support/joints.js';
+import type { JointScene, PointJointSpec } from './support/joints.js';
 
 const DT = 1 / 60;
-
-interface Scene {
-  world: World;
-  bodies: Body[];
-  error: () => number;
-}
 
 /**
  * Links at `points` (y up), joined at the midpoints between neighbours, the first and the last
  * pinned to the world at `start` and `end` (when given); `twice` pins the first link a second
  * time at the same point.
  */
-function polyline(points: number[][], start: number[], end: number[] | null, twice = false): Scene {
+function polyline(points: number[][], start: number[], end: number[] | null, twice = false): JointScene {
   const world = makeWorld(3, {});
   const D = world.D;
   const shape = HyperSphere(D, 0.1);
   const bodies = points.map((p) => world.addBody(new Body(D, { shape, mass: 1, position: p })));
-  const joints: [Body, number[], Body | null, number[]][] = [];
+  const joints: PointJointSpec[] = [];
   const local = (p: number[], at: number[]): number[] => at.map((v, i) => v - p[i]!);
   joints.push([bodies[0]!, local(points[0]!, start), null, start]);
   if (twice) joints.push([bodies[0]!, local(points[0]!, start), null, start]);
@@ -51,16 +45,10 @@ function polyline(points: number[][], start: number[], end: number[] | null, twi
     joints.push([bodies[i - 1]!, local(points[i - 1]!, mid), bodies[i]!, local(points[i]!, mid)]);
   }
   if (end !== null) joints.push([bodies[bodies.length - 1]!, local(points[points.length - 1]!, end), null, end]);
-  for (const [a, la, b, lb] of joints) world.addConstraint(new PointJoint(a, b, la, lb));
-  const error = (): number => {
-    let worst = 0;
-    for (const [a, la, b, lb] of joints) worst = Math.max(worst, pointJointError(a, la, b, lb));
-    return worst;
-  };
-  return { world, bodies, error };
+  return pointJointScene(world, bodies, joints);
 }
 
-const uChain = (): Scene =>
+const uChain = (): JointScene =>
   polyline(
     [
       [0, -0.5, 0],
@@ -73,16 +61,16 @@ const uChain = (): Scene =>
     [0, 0, 0],
     [2, 0, 0],
   );
-const tautChain = (): Scene =>
+const tautChain = (): JointScene =>
   polyline(
     Array.from({ length: 5 }, (_, i) => [i + 0.5, 0, 0]),
     [0, 0, 0],
     [5, 0, 0],
   );
-const doublePin = (): Scene => polyline([[0.5, 0, 0]], [0, 0, 0], null, true);
+const doublePin = (): JointScene => polyline([[0.5, 0, 0]], [0, 0, 0], null, true);
 
 /** Steps the scene; returns the worst joint error and the lowest height a body reached. */
-function run(scene: Scene, steps: number): { worst: number; lowest: number } {
+function run(scene: JointScene, steps: number): { worst: number; lowest: number } {
   let worst = 0;
   let lowest = Infinity;
   for (let s = 0; s < steps; s += 1) {

@@ -15,19 +15,13 @@
  */
 import { describe, expect, it } from 'vitest';
 import { Body, FixedJoint, HyperSphere, PointJoint } from '@physin/engine';
-import type { World } from '@physin/engine';
 import { makeWorld } from './support/scenes.js';
-import { pointJointError, snapshot } from './support/joints.js';
+import { pointJointError, pointJointScene, snapshot } from './support/joints.js';
+import type { JointScene, PointJointSpec } from './support/joints.js';
 
 const DT = 1 / 60;
 
-interface Scene {
-  world: World;
-  bodies: Body[];
-  error: () => number;
-}
-
-function doubleWeld(): Scene {
+function doubleWeld(): JointScene {
   const world = makeWorld(3, {});
   const D = world.D;
   const shape = HyperSphere(D, 0.1);
@@ -48,14 +42,14 @@ function doubleWeld(): Scene {
   return { world, bodies, error };
 }
 
-function pinnedGrid(side: number): Scene {
+function pinnedGrid(side: number): JointScene {
   const world = makeWorld(3, {});
   const D = world.D;
   const shape = HyperSphere(D, 0.25);
   const bodies: Body[] = [];
   for (let row = 0; row < side; row += 1)
     for (let col = 0; col < side; col += 1) bodies.push(world.addBody(new Body(D, { shape, mass: 1, position: [col, 0, row] })));
-  const joints: [Body, number[], Body | null, number[]][] = [];
+  const joints: PointJointSpec[] = [];
   for (let col = 0; col < side; col += 1) joints.push([bodies[col]!, [0, 0, 0], null, [col, 0, 0]]);
   for (let row = 0; row < side; row += 1)
     for (let col = 0; col < side; col += 1) {
@@ -63,17 +57,11 @@ function pinnedGrid(side: number): Scene {
       if (col + 1 < side) joints.push([at, [0.5, 0, 0], bodies[row * side + col + 1]!, [-0.5, 0, 0]]);
       if (row + 1 < side) joints.push([at, [0, 0, 0.5], bodies[(row + 1) * side + col]!, [0, 0, -0.5]]);
     }
-  for (const [a, la, b, lb] of joints) world.addConstraint(new PointJoint(a, b, la, lb));
-  const error = (): number => {
-    let worst = 0;
-    for (const [a, la, b, lb] of joints) worst = Math.max(worst, pointJointError(a, la, b, lb));
-    return worst;
-  };
-  return { world, bodies, error };
+  return pointJointScene(world, bodies, joints);
 }
 
 /** Steps the scene; returns the worst joint error and the lowest height the last body reached. */
-function run(scene: Scene, steps: number): { worst: number; lowest: number } {
+function run(scene: JointScene, steps: number): { worst: number; lowest: number } {
   let worst = 0;
   let lowest = Infinity;
   const last = scene.bodies[scene.bodies.length - 1]!;

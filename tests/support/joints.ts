@@ -80,6 +80,27 @@ export function unwrap(prev: number, next: number): number {
   return prev + d - 2 * Math.PI * Math.round(d / (2 * Math.PI));
 }
 
+/** A joint scene: its world, bodies, and the worst joint error now (m). */
+export interface JointScene {
+  world: World;
+  bodies: Body[];
+  error: () => number;
+}
+
+/** A point joint to add: body A, its local anchor, body B (null: the world), its local anchor. */
+export type PointJointSpec = [Body, number[], Body | null, number[]];
+
+/** Adds `joints` as point joints to `world`; the scene's error is the worst of their gaps. */
+export function pointJointScene(world: World, bodies: Body[], joints: PointJointSpec[]): JointScene {
+  for (const [a, la, b, lb] of joints) world.addConstraint(new PointJoint(a, b, la, lb));
+  const error = (): number => {
+    let worst = 0;
+    for (const [a, la, b, lb] of joints) worst = Math.max(worst, pointJointError(a, la, b, lb));
+    return worst;
+  };
+  return { world, bodies, error };
+}
+
 /** Every body's x, R, v, L, w, in world order, in one array (for bit-exact comparisons). */
 export function snapshot(world: World): number[] {
   const out: number[] = [];

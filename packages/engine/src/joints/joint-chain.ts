@@ -57,6 +57,28 @@ export function geometricLoad(js: JointSolver, j: number, slot: number): number 
 }
 
 /**
+ * The node tables of `JointTree` that `JointChain.build` walks (see `JointTree` for each): the
+ * tree points this record at its arrays before each build, as they may have grown.
+ * @internal
+ */
+export interface ForestLinks {
+  /** Per solver slot: its body node, or −1. */
+  slotNode: Int32Array;
+  /** Per node: its slot (body node) or joint index (joint node). */
+  nRef: Int32Array;
+  /** Per body node: its first incident joint node as an edge id, −1 for none. */
+  adjHead: Int32Array;
+  /** Per edge: the next edge of the same body. */
+  adjNext: Int32Array;
+  /** Per edge: its joint node. */
+  adjJoint: Int32Array;
+  /** Per body node: its first folded joint, −1 for none. */
+  fold: Int32Array;
+  /** Per joint: the next folded joint of the same body. */
+  foldNext: Int32Array;
+}
+
+/**
  * The chains of a joint forest in joint space, built by `JointTree.build` when the forest is
  * made of chains, factored and solved in its place.
  * @internal
@@ -109,21 +131,11 @@ export class JointChain {
   /**
    * Orders the forest's joints along its paths. Returns 1 when the forest is made of chains
    * this solver takes (3D, 3-row joints, at most two tree joints per body), else 0.
-   * `adjHead`/`fold` list each body node's joint nodes and folded joints (see `JointTree`).
+   * `forest` holds the tree's node tables as `JointTree.build` left them.
    */
-  build(
-    js: JointSolver,
-    role: Int32Array,
-    bodyNodes: number,
-    slotNode: Int32Array,
-    nRef: Int32Array,
-    adjHead: Int32Array,
-    adjNext: Int32Array,
-    adjJoint: Int32Array,
-    fold: Int32Array,
-    foldNext: Int32Array,
-  ): number {
+  build(js: JointSolver, role: Int32Array, bodyNodes: number, forest: ForestLinks): number {
     this.count = 0;
+    const { slotNode, adjHead, adjNext, fold, foldNext } = forest;
     if (this.n !== 3) return 0;
     const count = js.count;
     let tree = 0;
@@ -150,7 +162,7 @@ export class JointChain {
       let ends = 0;
       for (let side = 0; side < 2; side += 1) {
         const b = slotNode[side === 0 ? js.jA[j0] : js.jB[j0]];
-        if (b >= 0 && this.other(b, j0, nRef, adjHead, adjNext, adjJoint, fold, foldNext) >= 0) ends += 1;
+        if (b >= 0 && this.other(b, j0, forest) >= 0) ends += 1;
       }
       if (ends > 1) continue;
       let cur = j0;
@@ -174,7 +186,7 @@ export class JointChain {
         for (let side = 0; side < 2 && next < 0; side += 1) {
           const b = side === 0 ? nA : nB;
           if (b < 0 || b === prev) continue;
-          const o = this.other(b, cur, nRef, adjHead, adjNext, adjJoint, fold, foldNext);
+          const o = this.other(b, cur, forest);
           if (o >= 0 && seen[o] === 0) {
             next = o;
             via = b;
@@ -191,16 +203,8 @@ export class JointChain {
   }
 
   /** The tree joint of body node b other than j, or −1. */
-  private other(
-    b: number,
-    j: number,
-    nRef: Int32Array,
-    adjHead: Int32Array,
-    adjNext: Int32Array,
-    adjJoint: Int32Array,
-    fold: Int32Array,
-    foldNext: Int32Array,
-  ): number {
+  private other(b: number, j: number, forest: ForestLinks): number {
+    const { nRef, adjHead, adjNext, adjJoint, fold, foldNext } = forest;
     for (let ed = adjHead[b]; ed >= 0; ed = adjNext[ed]) {
       const o = nRef[adjJoint[ed]];
       if (o !== j) return o;

@@ -38,7 +38,7 @@
 import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
-import { geometricLoad, JointChain } from './joint-chain.js';
+import { geometricLoad, JointChain, type ForestLinks } from './joint-chain.js';
 import type { JointSolver } from './joint-solver.js';
 
 /** Relative size below which a pivot of a node block counts as zero. */
@@ -119,6 +119,8 @@ export class JointTree {
   private lastOk = 0;
   /** The joint-space solver of a forest of chains. */
   private readonly chain: JointChain;
+  /** The node tables `chain` walks when it builds (pointed at the current arrays then). */
+  private readonly links: ForestLinks;
   /** 1 when the forest is made of chains `chain` takes (set by `build`). */
   private chainOk = 0;
   /** Count of body nodes (numbered first, 0 … bodyNodes − 1). */
@@ -131,6 +133,15 @@ export class JointTree {
     this.k = D.k;
     this.bs = D.n + D.k;
     this.chain = new JointChain(D);
+    this.links = {
+      slotNode: this.slotNode,
+      nRef: this.nRef,
+      adjHead: this.adjHead,
+      adjNext: this.adjNext,
+      adjJoint: this.adjJoint,
+      fold: this.fold,
+      foldNext: this.foldNext,
+    };
   }
 
   /**
@@ -281,18 +292,15 @@ export class JointTree {
     this.vec = growFloat64(this.vec, vOff, 0);
     this.piv = growInt32(this.piv, 2 * vOff, 0);
     this.rdiag = growFloat64(this.rdiag, vOff, 0);
-    this.chainOk = this.chain.build(
-      js,
-      this.role,
-      bodyNodes,
-      this.slotNode,
-      this.nRef,
-      this.adjHead,
-      this.adjNext,
-      this.adjJoint,
-      this.fold,
-      this.foldNext,
-    );
+    const links = this.links;
+    links.slotNode = this.slotNode;
+    links.nRef = this.nRef;
+    links.adjHead = this.adjHead;
+    links.adjNext = this.adjNext;
+    links.adjJoint = this.adjJoint;
+    links.fold = this.fold;
+    links.foldNext = this.foldNext;
+    this.chainOk = this.chain.build(js, this.role, bodyNodes, links);
     return this.treeJoints;
   }
 

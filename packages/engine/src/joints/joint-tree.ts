@@ -845,38 +845,8 @@ export class JointTree {
     const chain = this.chain;
     const P = chain.count;
     const vec = chain.vec;
-    // c for each row, as `rowsRhs` writes it, in 3D: −(Ċ + bias) or target − C.
-    const rows = js.rows;
-    const RS = js.RS;
-    const S = js.OFF_S;
-    const V = sb.v;
-    const W = sb.w;
-    const oa = js.OFF_JA;
-    const ob = js.OFF_JB;
-    const targets = js.layoutOk === 1 ? 1 : 0;
-    for (let p = 0; p < P; p += 1) {
-      const j = chain.pJoint[p];
-      const first = js.jFirst[j];
-      const a = 3 * js.jA[j];
-      const b = 3 * js.jB[j];
-      for (let r = 0; r < 3; r += 1) {
-        const base = (first + r) * RS;
-        if (positions === 1) {
-          vec[3 * p + r] = (targets === 1 ? js.rowTarget[first + r] : 0) - rows[base + S + 6];
-          continue;
-        }
-        const ja = base + oa;
-        const jb = base + ob;
-        const v =
-          rows[base] * (V[b] - V[a]) +
-          rows[base + 1] * (V[b + 1] - V[a + 1]) +
-          rows[base + 2] * (V[b + 2] - V[a + 2]) +
-          (rows[jb] * W[b] - rows[ja] * W[a]) +
-          (rows[jb + 1] * W[b + 1] - rows[ja + 1] * W[a + 1]) +
-          (rows[jb + 2] * W[b + 2] - rows[ja + 2] * W[a + 2]);
-        vec[3 * p + r] = -(v + rows[base + S + 1]);
-      }
-    }
+    // c for each row (−(Ċ + bias) or target − C), in path order.
+    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, 3 * p, positions, this.rowSpeed);
     const B = this.bodyNodes;
     chain.solve(B);
     const acc = chain.acc;
@@ -901,6 +871,8 @@ export class JointTree {
       lambda[first + 1] += vec[3 * p + 1];
       lambda[first + 2] += vec[3 * p + 2];
     }
+    const V = sb.v;
+    const W = sb.w;
     for (let i = 0; i < B; i += 1) {
       const slot = this.nRef[i];
       const a0 = 6 * i;

@@ -123,6 +123,19 @@ const FINE_RESIDUAL = 2.5e-16;
 /** Below this residual, a chord step that no longer shrinks it has met rounding: the projection stops. */
 const FLOOR_RESIDUAL = 1e-12;
 
+/**
+ * A point row's residual within this many units in the last place of its anchors' coordinate is
+ * rounding (at least FINE_RESIDUAL): after a chord step, the position projection stops there.
+ */
+const FLOOR_ULPS = 4;
+
+/**
+ * A chord step predicted to leave every row within its rounding floor, or taken from at most
+ * STALL_RESIDUAL (m or rad; from there the floor stops a 1/REUSE_RATE-fold shrink), is likely the
+ * last: the check after it builds its rows in full, for the velocity projection to keep.
+ */
+const STALL_RESIDUAL = 2e-14;
+
 /** A rigid joint whose error ends a sub-step past this × constraintSlop is stretched. */
 const STRETCH_FACTOR = 10;
 
@@ -167,6 +180,11 @@ export class JointSolver {
    * C₀ − clamp(C₀, ±constraintMaxBias·h) (0 unless the error is beyond one sub-step's slide).
    */
   rowTarget = new Float64Array(16);
+  /**
+   * @internal Per row: the residual (m or rad) that is rounding for it, at least FINE_RESIDUAL: a
+   * point row's is FLOOR_ULPS units in the last place of its anchors' coordinate (see `pointRows`).
+   */
+  rowFloor = new Float64Array(16);
   /** @internal Row count at prepare (the projection's rebuilt rows match it row for row). */
   prepRows = 0;
   /** @internal 1 while the rebuilt rows match the prepared ones (rowTarget applies). */
@@ -236,10 +254,18 @@ export class JointSolver {
   private prepTree = 0;
   /**
    * What `rigidResidual` measured: [0] the largest |C − target| of the rigid equality rows, [1]
-   * that of their angular rows alone. Through an array: a double returned by a call V8 does not
+   * that of their angular rows alone, [2] the largest |C − target| / `rowFloor` (at most 1: every
+   * row at its rounding floor). Through an array: a double returned by a call V8 does not
    * inline is boxed (an allocation per call).
    */
-  private residual = new Float64Array(2);
+  private residual = new Float64Array(3);
+  /**
+   * 1 while `rows` hold every joint's rows built in full by the position projection at the current
+   * poses: the velocity projection then measures and keeps them instead of building them again.
+   */
+  private rowsFresh = 0;
+  /** Per solver slot: 1 once `solvePositions` brought the body's pose up to date. */
+  private synced = new Int32Array(16);
 
   constructor(D: Dims) {
     const { n, k, r } = D;
@@ -352,6 +378,7 @@ export class JointSolver {
     this.rows = growFloat64(this.rows, need * this.RS, keep * this.RS);
     this.lambdaRow = growFloat64(this.lambdaRow, need, keep);
     this.rowTarget = growFloat64(this.rowTarget, need, keep);
+    this.rowFloor = growFloat64(this.rowFloor, need, keep);
     this.rowKind = growInt32(this.rowKind, need, keep);
     this.rowKey = growInt32(this.rowKey, need, keep);
   }
@@ -371,6 +398,7 @@ export class JointSolver {
     if (type === ROW_EQUAL) this.jBlock[j] += 1;
     this.rowKind[row] = kind;
     this.rowKey[row] = key;
+    this.rowFloor[row] = FINE_RESIDUAL;
     const rows = this.rows;
     const base = row * RS;
     const ja = base + this.OFF_JA;
@@ -792,17 +820,25 @@ export class JointSolver {
    */
   solvePositions(sb: SolverBodies, iterations: number): void {
     if (this.count === 0) return;
-    // The poses lag the integrated x and R until the world updates them: bring them up first.
+    // The poses lag the integrated x and R until the world updates them: bring them up first, each
+    // body once (a chain link belongs to two joints; its slot says whether it was done already).
     const K = this.D.kernels;
+    if (this.synced.length < sb.count) this.synced = growInt32(this.synced, sb.count);
+    const synced = this.synced;
+    synced.fill(0, 0, sb.count);
     for (let j = 0; j < this.count; j += 1) {
       const joint = this.joints[j];
       const A = joint.a;
-      if (A.motion !== MOTION_STATIC && !A.sleeping) {
+      const a = this.jA[j];
+      if (A.motion !== MOTION_STATIC && !A.sleeping && synced[a] === 0) {
+        synced[a] = 1;
         A.pose!.x.set(A.x);
         K.toMatrix(A.pose!.M, A.R);
       }
       const B = joint.b;
-      if (B !== null && B.motion !== MOTION_STATIC && !B.sleeping) {
+      const b = this.jB[j];
+      if (B !== null && B.motion !== MOTION_STATIC && !B.sleeping && synced[b] === 0) {
+        synced[b] = 1;
         B.pose!.x.set(B.x);
         K.toMatrix(B.pose!.M, B.R);
       }
@@ -828,15 +864,26 @@ export class JointSolver {
     let chord = 0;
     let late = 0;
     let before = Infinity;
+    // 1 when the next check is likely the last: its rows are built in full, and the velocity
+    // projection takes them as they are instead of building them again (`rowsFresh`).
+    let last = 0;
+    this.rowsFresh = 0;
     for (let it = 0; it < most; it += 1) {
       // Rows from the current poses (the impulses were stored already); after a factorisation,
       // C alone, for a chord step (a pass that factors again rebuilds them in full, below).
-      this.buildProjectionRows(factored);
+      this.buildProjectionRows(factored === 1 && last === 0 ? 1 : 0);
       this.rigidResidual();
       const residual = this.residual[0];
       // An error at the level of rounding ends the projection at once, and so does a linear error
       // within `done` with the angular rows at rounding (after `first` passes).
-      if (residual <= FINE_RESIDUAL || (it >= first && residual <= done && this.residual[1] <= FINE_RESIDUAL)) break;
+      // After a chord step, every row within its rounding floor (`rowFloor`) ends it too: the anchors
+      // are computed to a few units in the last place of their coordinates, and one more step would
+      // only reshuffle that rounding. Only after a chord step: an error never projected in this
+      // sub-step stays held to FINE_RESIDUAL (a hanging rope of 100 links, 99.5 m long, keeps its
+      // joints at 2.3e-16 m, below a unit in the last place of its coordinates).
+      const floors = this.residual[2];
+      const angularFine = this.residual[1] <= FINE_RESIDUAL;
+      if (residual <= FINE_RESIDUAL || (chord === 1 && floors <= 1) || (angularFine && it >= first && residual <= done)) break;
       const canReuse = factored === 1 && this.sameLayout() === 1;
       // A chord step that no longer shrinks the error by REUSE_RATE: at the rounding floor, the
       // projection is done; above it, the tree is factored again.
@@ -847,7 +894,9 @@ export class JointSolver {
       // tolerance gets one more Newton step (factored past the `iterations` passes) first.
       if (it >= iterations && residual <= tolerance && (canReuse === false || (stalled && late === 1))) break;
       const reuse = canReuse && (residual <= REUSE_RATE * before || (it >= iterations && residual <= tolerance));
+      const rate = residual / before;
       before = residual;
+      last = 0;
       if (it === 0 && residual <= FLOOR_RESIDUAL && this.prepTree === 1 && this.sameLayout() === 1) {
         // An error this small (a settling chain: 1e-15) takes one step with the prepare's
         // factorisation, still in the tree, instead of a factorisation of its own: its Jacobians
@@ -858,6 +907,10 @@ export class JointSolver {
       } else if (reuse) {
         this.tree.solvePositions(this, sb);
         chord = 1;
+        // Chord steps converge linearly: at this rate the rows' next distance to their floors is about
+        // floors × rate, and a check at the floors, or one that can no longer shrink 1/REUSE_RATE-fold,
+        // ends the projection.
+        if (floors * rate <= 1 || residual <= STALL_RESIDUAL) last = 1;
       } else {
         // A pass that factors again needs its rows in full, not C alone.
         if (this.errorsOnly === 1) this.buildProjectionRows(0);
@@ -881,12 +934,14 @@ export class JointSolver {
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
       }
+      // The poses moved: the rows are not theirs any more.
+      this.rowsFresh = 0;
     }
     this.errorsOnly = 0;
-    for (let j = 0; j < this.count; j += 1) {
-      const joint = this.joints[j];
-      if (joint.a.motion === MOTION_DYNAMIC) joint.a.omegaFromMomentum();
-      if (joint.b !== null && joint.b.motion === MOTION_DYNAMIC) joint.b.omegaFromMomentum();
+    // ω from L under the new rotors, once per jointed body (the slots `synced` marked).
+    for (let s = 1; s < sb.count; s += 1) {
+      const body = sb.bodies[s]!;
+      if (synced[s] === 1 && body.motion === MOTION_DYNAMIC) body.omegaFromMomentum();
     }
     this.projectVelocities(sb);
   }
@@ -898,6 +953,7 @@ export class JointSolver {
    */
   private buildProjectionRows(errorsOnly: number): void {
     this.errorsOnly = errorsOnly;
+    this.rowsFresh = errorsOnly === 0 ? 1 : 0;
     this.rowCount = 0;
     this.factorSize = 0;
     for (let j = 0; j < this.count; j += 1) {
@@ -927,15 +983,17 @@ export class JointSolver {
   /**
    * The largest |C − target| over the equality rows of the rigid joints (rows just built): what
    * the position projection has left to remove, into `residual[0]`; the largest over the angular
-   * rows alone into `residual[1]`.
+   * rows alone into `residual[1]`; the largest of |C − target| / `rowFloor` into `residual[2]`.
    */
   private rigidResidual(): void {
     const RS = this.RS;
     const rows = this.rows;
     const ok = this.layoutOk === 1;
     const kind = this.rowKind;
+    const floor = this.rowFloor;
     let worst = 0;
     let angular = 0;
+    let floors = 0;
     for (let j = 0; j < this.count; j += 1) {
       if (this.jSoft[j] !== 0) continue;
       const first = this.jFirst[j];
@@ -943,10 +1001,13 @@ export class JointSolver {
         const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
         if (e > worst) worst = e;
         if (kind[q] !== KIND_LINEAR && e > angular) angular = e;
+        const f = e / floor[q];
+        if (f > floors) floors = f;
       }
     }
     this.residual[0] = worst;
     this.residual[1] = angular;
+    this.residual[2] = floors;
   }
 
   /**
@@ -966,19 +1027,44 @@ export class JointSolver {
       if (body.motion !== MOTION_DYNAMIC || body.jointCount === 0) continue;
       this.refreshSlot(sb, s2, body);
     }
+    // The rows the position projection ended with, when it built them in full at these poses, are
+    // the rows built here (the same poses, the same numbers): kept, not built again.
+    const keep = this.rowsFresh;
+    this.rowsFresh = 0;
+    const RS = this.RS;
     this.rowCount = 0;
     this.factorSize = 0;
     for (let j = 0; j < this.count; j += 1) {
+      const from = this.jFirst[j];
+      const block = this.jBlock[j];
       this.jFirst[j] = this.rowCount;
-      this.jBlock[j] = 0;
-      this.jRows[j] = 0;
       const joint = this.joints[j];
       if (joint.brokenFlag || this.jSoft[j] !== 0) {
+        this.jBlock[j] = 0;
+        this.jRows[j] = 0;
         joint.state[JS_ERROR] = 0;
         continue;
       }
-      joint.buildRows(this, j);
-      this.measureStretch(j);
+      if (keep === 1) {
+        // Measured where they are, then the equality rows moved down over any skipped ones.
+        const to = this.rowCount;
+        this.jFirst[j] = from;
+        this.measureStretch(j);
+        if (to !== from) {
+          this.rows.copyWithin(to * RS, from * RS, (from + block) * RS);
+          this.rowKind.copyWithin(to, from, from + block);
+          this.rowKey.copyWithin(to, from, from + block);
+        }
+        this.jFirst[j] = to;
+        this.jBlock[j] = block;
+        this.jRows[j] = block;
+        this.rowCount = to + block;
+      } else {
+        this.jBlock[j] = 0;
+        this.jRows[j] = 0;
+        joint.buildRows(this, j);
+        this.measureStretch(j);
+      }
       // Scalar rows (motor, limits) take no part.
       this.rowCount = this.jFirst[j] + this.jBlock[j];
       this.jRows[j] = this.jBlock[j];
@@ -1265,7 +1351,11 @@ export class JointSolver {
         }
       }
       const S = base + this.OFF_S;
-      rows[S + 6] = this.pB[d] - this.pA[d];
+      const a = this.pA[d];
+      const b = this.pB[d];
+      rows[S + 6] = b - a;
+      // C = p_B − p_A is computed to a few units in the last place of the larger coordinate.
+      this.rowFloor[row] = Math.max(FLOOR_ULPS * Number.EPSILON * Math.max(Math.abs(a), Math.abs(b)), FINE_RESIDUAL);
       rows[S + 7] = ROW_EQUAL;
       rows[S + 4] = 0;
       rows[S + 5] = 0;
@@ -1275,15 +1365,18 @@ export class JointSolver {
 
   /**
    * The joint frames R_JA = R_A·C_A and R_JB = R_B·C_B (R_B = 1 for the world), the matrix of R_JA
-   * and its bivector rotation `rot`, and the relative rotor Q = R_JA~ R_JB.
+   * and its bivector rotation `rot`, and the relative rotor Q = R_JA~ R_JB. For a chord step
+   * (`errorsOnly` 1) Q alone: the matrix and `rot` feed only the Jacobians.
    */
   frames(joint: Joint, CA: Float64Array, CB: Float64Array): void {
     const K = this.D.kernels;
     K.mul(this.RJA, joint.a.R, CA);
     if (joint.b === null) this.RJB.set(CB);
     else K.mul(this.RJB, joint.b.R, CB);
-    K.toMatrix(this.MJA, this.RJA);
-    bivectorRotationInto(this.D, this.rot, this.MJA);
+    if (this.errorsOnly === 0) {
+      K.toMatrix(this.MJA, this.RJA);
+      bivectorRotationInto(this.D, this.rot, this.MJA);
+    }
     reverseInto(this.D, this.T, this.RJA);
     K.mul(this.Q, this.T, this.RJB);
   }

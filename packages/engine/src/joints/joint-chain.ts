@@ -13,16 +13,22 @@
  * share. Its block LDLᵀ then has no fill-in either. A is positive definite whenever the rows are
  * independent, whatever the order: a chain held at both ends is solved as exactly as one held at
  * one end (the tree's order is not so neutral: a leaf body whose folded joint fixes a point can
- * leave its parent joint's block singular there, and the chain comes apart).
+ * leave its parent joint's block singular there, and the chain comes apart). With redundant rows
+ * (a planar loop of hinges, a chain welded at both ends, a taut chain) A is positive
+ * semi-definite, and so is each D_p.
  *
  * Two paths: point joints in 3D by 3 × 3 blocks and their cofactor inverses (a third of the size
  * of the tree's nodes: a factorisation of the chain of 10 in about 4 µs instead of 11), and every
  * other chain (hinges, welds, mixed widths, any n) by dense blocks, each D_p by an LDLᵀ. The
  * general path takes 15–20% longer a step on a 3-row chain than the 3 × 3 one, so both are kept.
  *
- * A pivot block that is not clearly positive definite (redundant or ill-conditioned rows: two
- * joints pinning the same point) fails the factorisation, and `JointTree` factors and solves
- * the forest itself for that factorisation (its LU drops the redundant rows).
+ * A pivot of D_p's LDLᵀ within ±1e-8 of its size (A_pp's largest diagonal entry plus what
+ * cancelled in it) belongs to a redundant row: it is dropped (1/d := 0, its column of L zero). For
+ * a semi-definite A that column is zero up to rounding anyway, L D Lᵀ is still A, and
+ * L⁻ᵀ D⁺ L⁻¹ is a generalised inverse of A: the solve meets every row whose right-hand side is
+ * consistent with the others (the redundant rows' c are, up to drift), the dropped direction
+ * taking no Δλ. A pivot below −1e-8 of its size means A is not semi-definite (nor the rows a
+ * joint's): the factorisation fails and `JointTree` factors and solves the forest itself.
  *
  * @module
  */
@@ -32,8 +38,10 @@ import type { SolverBodies } from '../solver/solver-bodies.js';
 import type { JointSolver } from './joint-solver.js';
 
 /**
- * A leading pivot of a block D_p at most this fraction of the largest diagonal entry of its
- * A_pp is not clearly positive (the tree's LDL_TOLERANCE): the factorisation fails.
+ * A pivot of a block D_p within this fraction of its size (the largest diagonal entry of its A_pp
+ * plus what cancelled in it: the tree's LDL_TOLERANCE) is a redundant row's, and dropped; below
+ * minus it the block is not semi-definite and the factorisation fails. The 3 × 3 path's cofactor
+ * check measures against A_pp alone, and hands a block it rejects to `semiInverse`.
  */
 const CHAIN_TOLERANCE = 1e-8;
 
@@ -165,8 +173,13 @@ export class JointChain {
   private dOff = new Int32Array(16);
   /** Per entry of `vec` (general path): 1 / d_j of its position's LDLᵀ. */
   private rd = new Float64Array(48);
-  /** The pivot tolerance of the next `ldlFactor` (general path). */
-  private tol = 0;
+  /**
+   * Per row of the block the next `ldlFactor` factors: the size its pivot is measured against
+   * (A_pp's largest diagonal entry plus what the Schur complement took from that row's diagonal).
+   */
+  private size = new Float64Array(6);
+  /** Three columns of the generalised inverse of a semi-definite 3 × 3 pivot block (`semiInverse`). */
+  private readonly cols = new Float64Array(9);
   /** The widest joint of the forest (general path). */
   private mMax = 3;
 
@@ -275,6 +288,7 @@ export class JointChain {
       this.Dinv = growFloat64(this.Dinv, d, 0);
       this.vec = growFloat64(this.vec, v, 0);
       this.rd = growFloat64(this.rd, v, 0);
+      this.size = growFloat64(this.size, mMax, 0);
       this.G = growFloat64(this.G, 2 * mMax * bs, 0);
       const k = this.k;
       this.bodyInv = growFloat64(this.bodyInv, (1 + k * k) * bodyNodes, 0);
@@ -310,6 +324,7 @@ export class JointChain {
     this.L = growFloat64(this.L, 9 * P, 0);
     this.Dinv = growFloat64(this.Dinv, 9 * P, 0);
     this.vec = growFloat64(this.vec, 3 * P, 0);
+    this.rd = growFloat64(this.rd, 3 * P, 0);
     this.bodyInv = growFloat64(this.bodyInv, 10 * bodies, 0);
     this.bodyG = growFloat64(this.bodyG, bodies, 0);
     this.acc = growFloat64(this.acc, 6 * bodies, 0);
@@ -318,8 +333,8 @@ export class JointChain {
   /**
    * Assembles A's blocks from the rows and the bodies' inverse mass and inertia (with the
    * geometric stiffness `stiffness`·Σ|λ||J_angular| on the angular diagonal of M̃)
-   * and factors A = L D Lᵀ along each path. Returns 1, or 0 when a pivot block is not clearly
-   * positive definite (the caller falls back to the tree).
+   * and factors A = L D Lᵀ along each path, redundant rows' pivots dropped. Returns 1, or 0 when a
+   * pivot block is not positive semi-definite (the caller falls back to the tree).
    */
   factor(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
     if (this.wide === 1) return this.factorWide(js, sb, bodyNodes, nRef);
@@ -438,13 +453,38 @@ export class JointChain {
             D[3 * r + c] -= l0 * off[o9 + 3 * c] + l1 * off[o9 + 3 * c + 1] + l2 * off[o9 + 3 * c + 2];
         }
       }
-      // D_p symmetric positive definite, its leading pivots clearly so, and D_p⁻¹.
+      // D_p⁻¹ when D_p is clearly positive definite (its leading minors), else its generalised inverse.
       const a0 = D[0];
       const tol = big * CHAIN_TOLERANCE;
       this.inverse(Dinv, o9);
       const m2 = this.minors[0];
-      if (!(a0 > tol) || !(m2 > tol * a0) || !(this.minors[1] > tol * m2)) return 0;
+      if (!(a0 > tol) || !(m2 > tol * a0) || !(this.minors[1] > tol * m2)) {
+        if (this.semiInverse(p, big) === 0) return 0;
+      }
     }
+    return 1;
+  }
+
+  /**
+   * D_p⁻¹ of the 3 × 3 path when D_p (in `blk`) is not clearly positive definite: its LDLᵀ with the
+   * rule of the general path (a redundant row's pivot dropped) and the generalised inverse
+   * L⁻ᵀ D⁺ L⁻¹ into Dinv, column by column. Returns 0 when D_p is not semi-definite.
+   */
+  private semiInverse(p: number, big: number): number {
+    const o9 = 9 * p;
+    const A = this.Dinv;
+    const D = this.blk;
+    for (let r = 0; r < 3; r += 1) {
+      let cut = 0;
+      if (this.pLink[p] === 1) for (let c = 0; c < 3; c += 1) cut += Math.abs(this.L[o9 + 3 * r + c] * this.off[o9 + 3 * r + c]);
+      this.size[r] = big + cut;
+      for (let c = r; c < 3; c += 1) A[o9 + 3 * r + c] = D[3 * r + c];
+    }
+    if (this.ldlFactor(o9, 3, 3 * p) === 0) return 0;
+    const X = this.cols;
+    for (let q = 0; q < 9; q += 1) X[q] = q % 4 === 0 ? 1 : 0;
+    for (let c = 0; c < 3; c += 1) this.ldlSolve(o9, 3, 3 * p, X, 3 * c);
+    for (let r = 0; r < 3; r += 1) for (let c = 0; c < 3; c += 1) A[o9 + 3 * r + c] = X[3 * c + r];
     return 1;
   }
 
@@ -572,7 +612,7 @@ export class JointChain {
   /**
    * `factor` for joints of any width: U = M̃⁻¹ Gᵀ per side (bs × m_p, row-major), A_pp and
    * A_p,p−1 from G U, L_p = A_p,p−1 D_p−1⁻¹ (each row by the LDLᵀ of D_p−1), D_p = A_pp − L_p A_p,p−1ᵀ,
-   * and each D_p's LDLᵀ; 0 when one of its pivots is not clearly positive.
+   * and each D_p's LDLᵀ (redundant rows dropped); 0 when a block is not semi-definite.
    */
   private factorWide(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
     const P = this.count;
@@ -686,14 +726,18 @@ export class JointChain {
           this.ldlSolve(this.dOff[p - 1], mp, this.vOff[p - 1], L, c0 + r * mp);
         }
         for (let r = 0; r < m; r += 1) {
+          let cut = 0;
+          for (let q = 0; q < mp; q += 1) cut += Math.abs(L[c0 + r * mp + q] * off[c0 + r * mp + q]);
+          this.size[r] = big + cut;
           for (let c = r; c < m; c += 1) {
             let sum = 0;
             for (let q = 0; q < mp; q += 1) sum += L[c0 + r * mp + q] * off[c0 + c * mp + q];
             Dm[d0 + r * m + c] -= sum;
           }
         }
+      } else {
+        for (let r = 0; r < m; r += 1) this.size[r] = big;
       }
-      this.tol = big * CHAIN_TOLERANCE;
       if (this.ldlFactor(d0, m, v0) === 0) return 0;
     }
     return 1;
@@ -701,21 +745,32 @@ export class JointChain {
 
   /**
    * The LDLᵀ of the symmetric m × m block at Dinv[d0] (its upper triangle is read): L_rj into the
-   * lower triangle, 1 / d_j into rd[r0 + j]. Returns 0 when a pivot is not above `tol`.
-   * (The tolerance is a field, not an argument: a double passed to a call that is not inlined
-   * is boxed, an allocation per call.)
+   * lower triangle, 1 / d_j into rd[r0 + j], 0 for a dropped pivot (within ±CHAIN_TOLERANCE of
+   * `size`[j] plus the terms that cancelled in it). Returns 0 when a pivot is below minus that.
+   * (The sizes are a field, not arguments: a double passed to a call that is not inlined is
+   * boxed, an allocation per call.)
    */
   private ldlFactor(d0: number, m: number, r0: number): number {
-    const tol = this.tol;
     const A = this.Dinv;
     const rd = this.rd;
     for (let j = 0; j < m; j += 1) {
       let d = A[d0 + j * m + j];
+      let size = this.size[j];
       for (let q = 0; q < j; q += 1) {
         const l = A[d0 + j * m + q];
-        d -= l * l * rd[r0 + q];
+        const t = l * l * rd[r0 + q];
+        d -= t;
+        size += t;
       }
-      if (!(d > tol)) return 0;
+      const tol = size * CHAIN_TOLERANCE;
+      if (!(d > tol)) {
+        // Not clearly positive: below −tol (or NaN) the block is not semi-definite; within ±tol a
+        // redundant row, dropped (1 / d := 0, its column of L zero).
+        if (!(d >= -tol)) return 0;
+        rd[r0 + j] = 0;
+        for (let r = j + 1; r < m; r += 1) A[d0 + r * m + j] = 0;
+        continue;
+      }
       rd[r0 + j] = d;
       for (let r = j + 1; r < m; r += 1) {
         let sum = A[d0 + j * m + r];
@@ -723,11 +778,11 @@ export class JointChain {
         A[d0 + r * m + j] = sum / d;
       }
     }
-    for (let j = 0; j < m; j += 1) rd[r0 + j] = 1 / rd[r0 + j];
+    for (let j = 0; j < m; j += 1) if (rd[r0 + j] !== 0) rd[r0 + j] = 1 / rd[r0 + j];
     return 1;
   }
 
-  /** x ← D⁻¹ x for the LDLᵀ at Dinv[d0] (m × m, 1 / d_j at rd[r0]), x the m entries at X[x0]. */
+  /** x ← D⁻¹ x (D⁺: a dropped pivot's 1 / d_j is 0) for the LDLᵀ at Dinv[d0] (m × m, 1 / d_j at rd[r0]), x the m entries at X[x0]. */
   private ldlSolve(d0: number, m: number, r0: number, X: Float64Array, x0: number): void {
     const A = this.Dinv;
     const rd = this.rd;

@@ -28,8 +28,8 @@
  *   Gauss–Seidel passes around it.
  * - A forest made of chains (joints of any width, in any n) is factored and solved in joint space
  *   instead (`JointChain`, block-tridiagonal in m_p × m_q blocks; point joints in 3D by 3 × 3
- *   blocks: a factorisation in about a third of the time); where that factorisation meets a
- *   pivot block that is not clearly positive definite, this one is used.
+ *   blocks: a factorisation in about a third of the time); redundant rows are dropped there,
+ *   and only a pivot block that is not even positive semi-definite hands the factorisation here.
  *
  * Storage is flat and grows by doubling; nothing is allocated once the scene has been seen.
  *

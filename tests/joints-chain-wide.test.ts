@@ -17,9 +17,9 @@
  *   plane (widths 5, 6, 6, …: mixed along the path), over 3 s: to 1e-14 m and rad;
  * - the whipping point chain of 10 in 4D and in 2D (4 and 2 rows a joint), over 10 s, as the tree;
  * - the same U with every hinge about z (a planar loop: 3 rows redundant out of the plane) and the U
- *   welded together and to the world at both ends (6 rows redundant): the LDLᵀ drops the redundant
- *   pivots, every row to rounding over 3 s (9.2e-16 and 3.2e-16 m; the tree, which took them before,
- *   opened them 3.1 m and 2.7e-3 m);
+ *   welded together and to the world at both ends (6 rows redundant; in 4D 10): the LDLᵀ drops the
+ *   redundant pivots, every row to rounding over 3 s (9.2e-16, 3.2e-16 and 3.2e-16 m; the tree,
+ *   which took them before, opened them 3.1 m, 2.7e-3 m and 9.4e10 m);
  * - every scene gives the same bits in two runs.
  */
 import { describe, expect, it } from 'vitest';
@@ -79,11 +79,15 @@ function planarU(): Scene {
   );
 }
 
-/** The U of 6 links welded together and to the world at both ends: 42 rows on 36 unknowns, 6 redundant. */
-function weldedU(): Scene {
+/**
+ * The U of 6 links welded together and to the world at both ends, in n dimensions (3: 42 rows on
+ * 36 unknowns, 6 redundant; 4: 70 on 60, 10 redundant).
+ */
+function weldedU(n = 3): Scene {
   const make: JointMaker = (_i, a, la, b, lb) => new FixedJoint(a, b, la, lb);
+  const pad = (p: number[]): number[] => p.concat(new Array<number>(n - 3).fill(0));
   return scene(
-    jointPath(U_POINTS, [0, 0, 0], [2, 0, 0], make),
+    jointPath(U_POINTS.map(pad), pad([0, 0, 0]), pad([2, 0, 0]), make),
     U_POINTS.concat([[0, 0, 0]]).map(() => null),
   );
 }
@@ -174,18 +178,21 @@ describe('chains of joints of any width in joint space', () => {
     expect(r.lowest).toBeLessThan(-2.05);
   });
 
-  it('the U welded together and to the world at both ends (6 redundant rows) holds to rounding over 3 s', () => {
-    // The last weld's 6 pivots are dropped: 3.2e-16 m and 2.4e-16 rad measured, and no body moves
-    // more than 3.1e-16 m (chain-wide58 handed these sub-steps to the tree: 2.7e-3 m).
-    const s = weldedU();
-    const start = s.bodies.map((b) => Float64Array.from(b.x));
-    const r = run(s, 180);
-    const moved = Math.max(...s.bodies.map((b, i) => Math.hypot(...b.x.map((v, d) => v - start[i]![d]!))));
-    report('welded U', r);
-    console.log(`welded U: largest displacement ${moved.toExponential(2)} m`);
-    expect(r.point).toBeLessThan(2e-15);
-    expect(r.angle).toBeLessThan(1e-15);
-    expect(moved).toBeLessThan(1e-15);
+  it('the U welded together and to the world at both ends (3D, 4D: all of the last weld redundant) holds to rounding over 3 s', () => {
+    // The last weld's pivots are dropped. 3D: 3.2e-16 m and 2.4e-16 rad measured, no body moves
+    // more than 3.1e-16 m (chain-wide58 handed these sub-steps to the tree: 2.7e-3 m); 4D: 3.2e-16 m and
+    // 2.3e-16 rad, no body moves more than 2.5e-16 m (the tree: 9.4e10 m, the U thrown apart).
+    for (const n of [3, 4]) {
+      const s = weldedU(n);
+      const start = s.bodies.map((b) => Float64Array.from(b.x));
+      const r = run(s, 180);
+      const moved = Math.max(...s.bodies.map((b, i) => Math.hypot(...b.x.map((v, d) => v - start[i]![d]!))));
+      report(`welded U, n = ${n}`, r);
+      console.log(`welded U, n = ${n}: largest displacement ${moved.toExponential(2)} m`);
+      expect(r.point).toBeLessThan(2e-15);
+      expect(r.angle).toBeLessThan(1e-15);
+      expect(moved).toBeLessThan(1e-15);
+    }
   });
 
   it('the whipping chain of 10 hinges: every joint closed to rounding over 10 s', () => {
@@ -214,7 +221,16 @@ describe('chains of joints of any width in joint space', () => {
   });
 
   it('every scene gives the same bits in two runs', () => {
-    for (const make of [hingeU, planarU, weldedU, hingeWhip, weldBeam, () => pointWhip(4), () => pointWhip(2)]) {
+    for (const make of [
+      hingeU,
+      planarU,
+      () => weldedU(3),
+      () => weldedU(4),
+      hingeWhip,
+      weldBeam,
+      () => pointWhip(4),
+      () => pointWhip(2),
+    ]) {
       const a = make();
       const b = make();
       run(a, 90);

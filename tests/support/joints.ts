@@ -8,7 +8,7 @@
  */
 import { rotorApplyVector, rotorFromPlane, rotorMul, rotorReverse } from '@physin/algebra';
 import { Body, HyperSphere, PointJoint } from '@physin/engine';
-import type { Dims, Params, World } from '@physin/engine';
+import type { Dims, Joint, Params, World } from '@physin/engine';
 import { makeWorld } from './scenes.js';
 
 /** The world position of the body point `local` (body frame): x + R local R~. */
@@ -203,4 +203,59 @@ export function runChain(chain: Chain, steps: number, dt: number): { worst: numb
 /** Runs a chain for `steps` steps of dt and returns the worst joint error over every step end. */
 export function worstChainError(chain: Chain, steps: number, dt: number): number {
   return runChain(chain, steps, dt).worst;
+}
+
+/** Makes the joint between `a` (anchor `la`) and `b` (anchor `lb`; null: the world, `lb` a world point); `i` counts the joints. */
+export type JointMaker = (i: number, a: Body, la: number[], b: Body | null, lb: number[]) => Joint;
+
+/** A chain of joints of any kind: its world, bodies and joints (in path order). */
+export interface JointPath {
+  world: World;
+  bodies: Body[];
+  joints: Joint[];
+}
+
+/**
+ * Balls of 1 kg at `points` (y up, n = points[0].length), joined at the midpoints between
+ * neighbours by `make`, the first and (with `end`) the last joined to the world at `start` and
+ * `end`. Every body starts unturned, so each joint's rest relative rotor is the identity.
+ */
+export function jointPath(
+  points: number[][],
+  start: number[],
+  end: number[] | null,
+  make: JointMaker,
+  params: Partial<Params> = {},
+): JointPath {
+  const world = makeWorld(points[0]!.length, params);
+  const D = world.D;
+  const shape = HyperSphere(D, LINK_RADIUS);
+  const bodies = points.map((p) => world.addBody(new Body(D, { shape, mass: 1, position: p })));
+  const local = (p: number[], at: number[]): number[] => at.map((v, i) => v - p[i]!);
+  const joints: Joint[] = [];
+  joints.push(make(0, bodies[0]!, local(points[0]!, start), null, start));
+  for (let i = 1; i < points.length; i += 1) {
+    const mid = points[i]!.map((v, d) => 0.5 * (v + points[i - 1]![d]!));
+    joints.push(make(joints.length, bodies[i - 1]!, local(points[i - 1]!, mid), bodies[i]!, local(points[i]!, mid)));
+  }
+  if (end !== null)
+    joints.push(make(joints.length, bodies[bodies.length - 1]!, local(points[points.length - 1]!, end), null, end));
+  for (const j of joints) world.addConstraint(j);
+  return { world, bodies, joints };
+}
+
+/**
+ * The locked-angle error of a joint between `a` and `b` (null: the world) whose rest relative
+ * rotor is the identity and whose free plane is the unit bivector `free` in a's frame (none: a
+ * weld): 2|q − (q·F)F| for the bivector part q of Q = R_A~ R_B, about the angle (rad) the locked
+ * planes turned, without the acos of the scalar part (which loses half the digits near 0).
+ */
+export function lockedAngleError(D: Dims, a: Body, b: Body | null, free: ArrayLike<number> | null): number {
+  const Q = b === null ? rotorReverse(D, new Float64Array(D.r), a.R) : relativeRotor(D, a, b);
+  let qf = 0;
+  if (free !== null) for (let p = 0; p < D.k; p += 1) qf += Q[1 + p]! * free[p]!;
+  let s = 0;
+  for (let p = 0; p < D.k; p += 1) s += (Q[1 + p]! - (free === null ? 0 : qf * free[p]!)) ** 2;
+  for (let i = 1 + D.k; i < D.r; i += 1) s += Q[i]! ** 2;
+  return 2 * Math.sqrt(s);
 }

@@ -1,22 +1,34 @@
 /**
  * The joint-space solve of the rigid joints that form chains (see docs/joints.md, "Chains in joint
  * space"): where every component of the joint forest is a path (each dynamic body has at most two
- * tree joints) of 3-row joints in 3D (point joints), the system the forest solves,
+ * tree joints, those to the world included) of joints of any width, the system the forest solves,
  *
  * ```
  * A Δλ = c,   A = J M̃⁻¹ Jᵀ,   Δv = M̃⁻¹ Jᵀ Δλ
  * ```
  *
  * (M̃: the mass matrix with the geometric stiffness on its angular blocks, as in `JointTree`), is
- * block-tridiagonal in 3 × 3 blocks when the joints are taken along the path: joint p couples
- * only to the joints before and after it, through the body they share. Its block LDLᵀ then has
- * no fill-in either, and its blocks are a third of the size of the body + joint nodes of the
- * tree's KKT system (3 × 3 against 6–9 square): a factorisation of the chain of 10 takes about
- * 4 µs instead of 11, and meets the rows as exactly (to rounding).
+ * block-tridiagonal in m_p × m_q blocks (m_p: joint p's equality rows) when the joints are taken
+ * along the path: joint p couples only to the joints before and after it, through the body they
+ * share. Its block LDLᵀ then has no fill-in either. A is positive definite whenever the rows are
+ * independent, whatever the order: a chain held at both ends is solved as exactly as one held at
+ * one end (the tree's order is not so neutral: a leaf body whose folded joint fixes a point can
+ * leave its parent joint's block singular there, and the chain comes apart). With redundant rows
+ * (a planar loop of hinges, a chain welded at both ends, a taut chain) A is positive
+ * semi-definite, and so is each D_p.
  *
- * A pivot block that is not clearly positive definite (redundant or ill-conditioned rows: two
- * joints pinning the same point) fails the factorisation, and `JointTree` factors and solves
- * the forest itself for that factorisation (its LU drops the redundant rows).
+ * Two paths: point joints in 3D by 3 × 3 blocks and their cofactor inverses (a third of the size
+ * of the tree's nodes: a factorisation of the chain of 10 in about 4 µs instead of 11), and every
+ * other chain (hinges, welds, mixed widths, any n) by dense blocks, each D_p by an LDLᵀ. The
+ * general path takes 15–20% longer a step on a 3-row chain than the 3 × 3 one, so both are kept.
+ *
+ * A pivot of D_p's LDLᵀ within ±1e-8 of its size (A_pp's largest diagonal entry plus what
+ * cancelled in it) belongs to a redundant row: it is dropped (1/d := 0, its column of L zero). For
+ * a semi-definite A that column is zero up to rounding anyway, L D Lᵀ is still A, and
+ * L⁻ᵀ D⁺ L⁻¹ is a generalised inverse of A: the solve meets every row whose right-hand side is
+ * consistent with the others (the redundant rows' c are, up to drift), the dropped direction
+ * taking no Δλ. A pivot below −1e-8 of its size means A is not semi-definite (nor the rows a
+ * joint's): the factorisation fails and `JointTree` factors and solves the forest itself.
  *
  * @module
  */
@@ -26,10 +38,15 @@ import type { SolverBodies } from '../solver/solver-bodies.js';
 import type { JointSolver } from './joint-solver.js';
 
 /**
- * A leading pivot of a block D_p at most this fraction of the largest diagonal entry of its
- * A_pp is not clearly positive (the tree's LDL_TOLERANCE): the factorisation fails.
+ * A pivot of a block D_p within this fraction of its size (the largest diagonal entry of its A_pp
+ * plus what cancelled in it: the tree's LDL_TOLERANCE) is a redundant row's, and dropped; below
+ * minus it the block is not semi-definite and the factorisation fails. The 3 × 3 path's cofactor
+ * check measures against A_pp alone, and hands a block it rejects to `semiInverse`.
  */
 const CHAIN_TOLERANCE = 1e-8;
+
+/** The sum `geometricLoad` returns (0 + x is x, bit for bit). */
+const LOAD = new Float64Array(1);
 
 /**
  * |λ| · |J_angular| of joint j's equality rows on the body in `slot` (N·s·m): the size of the
@@ -38,6 +55,18 @@ const CHAIN_TOLERANCE = 1e-8;
  * @internal
  */
 export function geometricLoad(js: JointSolver, j: number, slot: number): number {
+  LOAD[0] = 0;
+  addGeometricLoad(js, j, slot, LOAD, 0);
+  return LOAD[0];
+}
+
+/**
+ * out[at] += `geometricLoad`(js, j, slot), the sum made here: the factorisations that call this
+ * are too large for V8 to inline `geometricLoad` into them, and the double it returned would be
+ * boxed, an allocation per call (this returns nothing).
+ * @internal
+ */
+export function addGeometricLoad(js: JointSolver, j: number, slot: number, out: Float64Array, at: number): void {
   const first = js.jFirst[j];
   const m = js.jBlock[j];
   const off = js.jB[j] === slot ? js.OFF_JB : js.OFF_JA;
@@ -53,7 +82,7 @@ export function geometricLoad(js: JointSolver, j: number, slot: number): number 
     const base = q * js.RS + off;
     for (let p = 0; p < k; p += 1) a2 += rows[base + p] * rows[base + p];
   }
-  return Math.sqrt(l2 * a2);
+  out[at] += Math.sqrt(l2 * a2);
 }
 
 /**
@@ -107,6 +136,8 @@ export class JointChain {
   private Dinv = new Float64Array(16 * 9);
   /** Per body node: 1/m and the angular M̃⁻¹ (3 × 3). */
   private bodyInv = new Float64Array(16 * 10);
+  /** Per body node (general path): the scalar of its M̃ angular inverse when that is s·1, else −1. */
+  private bodyIso = new Float64Array(16);
   /** Per body node: Σ|λ||J_angular| over its joints (the geometric stiffness before its scale). */
   private bodyG = new Float64Array(16);
   /** Per body node: the Δv and Δω of a solve. */
@@ -118,30 +149,63 @@ export class JointChain {
   /** The leading minors of order 2 and 3 of the block `inverse` inverted last. */
   private readonly minors = new Float64Array(2);
   /** The signed Jacobians (3 × 6) of the two sides of the position being factored. */
-  private readonly G = new Float64Array(36);
+  private G = new Float64Array(36);
+  /** A body's M̃ angular block (k × k) being inverted (general path). */
+  private kblk = new Float64Array(9);
   /** The scale of the geometric stiffness for the next `factor` (`JointTree.stiffness`). */
   stiffness = 0;
-  /** Count of dimensions (the chains are taken in 3D only). */
+  /** Count of dimensions. */
   private readonly n: number;
+  /** Angular components of a body (k = n(n − 1)/2). */
+  private readonly k: number;
+  /** n + k: the velocity size of a body (the stride of `acc`). */
+  readonly bs: number;
+  /**
+   * 1 when the chains are solved by the general path (joints of any width m, any n: blocks
+   * m_p × m_q, each D_p by a dense LDLᵀ); 0 for the 3 × 3 path (point joints in 3D).
+   */
+  private wide = 0;
+  /** Per position: its first entry in `vec` (the sum of the widths before it); P + 1 entries. */
+  vOff = new Int32Array(17);
+  /** Per position (general path): the offset of its A_p,p−1 and L_p (m_p × m_p−1) in `off` and `L`. */
+  private cOff = new Int32Array(16);
+  /** Per position (general path): the offset of its factored D_p (m_p × m_p) in `Dinv`. */
+  private dOff = new Int32Array(16);
+  /** Per entry of `vec` (general path): 1 / d_j of its position's LDLᵀ. */
+  private rd = new Float64Array(48);
+  /**
+   * Per row of the block the next `ldlFactor` factors: the size its pivot is measured against
+   * (A_pp's largest diagonal entry plus what the Schur complement took from that row's diagonal).
+   */
+  private size = new Float64Array(6);
+  /** Three columns of the generalised inverse of a semi-definite 3 × 3 pivot block (`semiInverse`). */
+  private readonly cols = new Float64Array(9);
+  /** The widest joint of the forest (general path). */
+  private mMax = 3;
 
   constructor(D: Dims) {
     this.n = D.n;
+    this.k = D.k;
+    this.bs = D.n + D.k;
   }
 
   /**
    * Orders the forest's joints along its paths. Returns 1 when the forest is made of chains
-   * this solver takes (3D, 3-row joints, at most two tree joints per body), else 0.
+   * (at most two tree joints per body: joints of any width, to the world or not), else 0.
    * `forest` holds the tree's node tables as `JointTree.build` left them.
    */
   build(js: JointSolver, role: Int32Array, bodyNodes: number, forest: ForestLinks): number {
     this.count = 0;
     const { slotNode, adjHead, adjNext, fold, foldNext } = forest;
-    if (this.n !== 3) return 0;
     const count = js.count;
     let tree = 0;
+    let wide = this.n !== 3 ? 1 : 0;
+    let mMax = 0;
     for (let j = 0; j < count; j += 1) {
       if (role[j] === 0) continue;
-      if (js.jBlock[j] !== 3) return 0;
+      const m = js.jBlock[j];
+      if (m !== 3) wide = 1;
+      if (m > mMax) mMax = m;
       tree += 1;
     }
     for (let i = 0; i < bodyNodes; i += 1) {
@@ -199,6 +263,39 @@ export class JointChain {
     }
     if (P !== tree) return 0; // a cycle of joints (not in a forest): the tree decides
     this.count = P;
+    this.wide = wide;
+    this.mMax = mMax;
+    // Offsets along the path (the 3 × 3 path's are 3p, 9p and 36p by construction).
+    const vOff = this.vOff;
+    let v = 0;
+    let c = 0;
+    let d = 0;
+    for (let p = 0; p < P; p += 1) {
+      const m = js.jBlock[this.pJoint[p]];
+      vOff[p] = v;
+      this.cOff[p] = c;
+      this.dOff[p] = d;
+      if (this.pLink[p] === 1) c += m * js.jBlock[this.pJoint[p - 1]];
+      d += m * m;
+      v += m;
+    }
+    vOff[P] = v;
+    if (wide === 1) {
+      const bs = this.bs;
+      this.U = growFloat64(this.U, 2 * v * bs, 0);
+      this.off = growFloat64(this.off, c, 0);
+      this.L = growFloat64(this.L, c, 0);
+      this.Dinv = growFloat64(this.Dinv, d, 0);
+      this.vec = growFloat64(this.vec, v, 0);
+      this.rd = growFloat64(this.rd, v, 0);
+      this.size = growFloat64(this.size, mMax, 0);
+      this.G = growFloat64(this.G, 2 * mMax * bs, 0);
+      const k = this.k;
+      this.bodyInv = growFloat64(this.bodyInv, (1 + k * k) * bodyNodes, 0);
+      this.acc = growFloat64(this.acc, bs * bodyNodes, 0);
+      this.bodyIso = growFloat64(this.bodyIso, bodyNodes, 0);
+      this.kblk = growFloat64(this.kblk, k * k, 0);
+    }
     return 1;
   }
 
@@ -215,6 +312,9 @@ export class JointChain {
 
   private grow(P: number, bodies: number): void {
     this.pJoint = growInt32(this.pJoint, P, 0);
+    this.vOff = growInt32(this.vOff, P + 1, 0);
+    this.cOff = growInt32(this.cOff, P, 0);
+    this.dOff = growInt32(this.dOff, P, 0);
     this.pLink = growInt32(this.pLink, P, 0);
     this.pSide = growInt32(this.pSide, P, 0);
     this.pPrevSide = growInt32(this.pPrevSide, P, 0);
@@ -224,6 +324,7 @@ export class JointChain {
     this.L = growFloat64(this.L, 9 * P, 0);
     this.Dinv = growFloat64(this.Dinv, 9 * P, 0);
     this.vec = growFloat64(this.vec, 3 * P, 0);
+    this.rd = growFloat64(this.rd, 3 * P, 0);
     this.bodyInv = growFloat64(this.bodyInv, 10 * bodies, 0);
     this.bodyG = growFloat64(this.bodyG, bodies, 0);
     this.acc = growFloat64(this.acc, 6 * bodies, 0);
@@ -232,10 +333,11 @@ export class JointChain {
   /**
    * Assembles A's blocks from the rows and the bodies' inverse mass and inertia (with the
    * geometric stiffness `stiffness`·Σ|λ||J_angular| on the angular diagonal of M̃)
-   * and factors A = L D Lᵀ along each path. Returns 1, or 0 when a pivot block is not clearly
-   * positive definite (the caller falls back to the tree).
+   * and factors A = L D Lᵀ along each path, redundant rows' pivots dropped. Returns 1, or 0 when a
+   * pivot block is not positive semi-definite (the caller falls back to the tree).
    */
   factor(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
+    if (this.wide === 1) return this.factorWide(js, sb, bodyNodes, nRef);
     const P = this.count;
     const stiffness = this.stiffness;
     const rows = js.rows;
@@ -248,8 +350,8 @@ export class JointChain {
         const j = this.pJoint[p];
         const nA = this.sNode[2 * p];
         const nB = this.sNode[2 * p + 1];
-        if (nA >= 0) g[nA] += geometricLoad(js, j, js.jA[j]);
-        if (nB >= 0) g[nB] += geometricLoad(js, j, js.jB[j]);
+        if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
+        if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
       }
     }
     for (let i = 0; i < bodyNodes; i += 1) {
@@ -351,13 +453,38 @@ export class JointChain {
             D[3 * r + c] -= l0 * off[o9 + 3 * c] + l1 * off[o9 + 3 * c + 1] + l2 * off[o9 + 3 * c + 2];
         }
       }
-      // D_p symmetric positive definite, its leading pivots clearly so, and D_p⁻¹.
+      // D_p⁻¹ when D_p is clearly positive definite (its leading minors), else its generalised inverse.
       const a0 = D[0];
       const tol = big * CHAIN_TOLERANCE;
       this.inverse(Dinv, o9);
       const m2 = this.minors[0];
-      if (!(a0 > tol) || !(m2 > tol * a0) || !(this.minors[1] > tol * m2)) return 0;
+      if (!(a0 > tol) || !(m2 > tol * a0) || !(this.minors[1] > tol * m2)) {
+        if (this.semiInverse(p, big) === 0) return 0;
+      }
     }
+    return 1;
+  }
+
+  /**
+   * D_p⁻¹ of the 3 × 3 path when D_p (in `blk`) is not clearly positive definite: its LDLᵀ with the
+   * rule of the general path (a redundant row's pivot dropped) and the generalised inverse
+   * L⁻ᵀ D⁺ L⁻¹ into Dinv, column by column. Returns 0 when D_p is not semi-definite.
+   */
+  private semiInverse(p: number, big: number): number {
+    const o9 = 9 * p;
+    const A = this.Dinv;
+    const D = this.blk;
+    for (let r = 0; r < 3; r += 1) {
+      let cut = 0;
+      if (this.pLink[p] === 1) for (let c = 0; c < 3; c += 1) cut += Math.abs(this.L[o9 + 3 * r + c] * this.off[o9 + 3 * r + c]);
+      this.size[r] = big + cut;
+      for (let c = r; c < 3; c += 1) A[o9 + 3 * r + c] = D[3 * r + c];
+    }
+    if (this.ldlFactor(o9, 3, 3 * p) === 0) return 0;
+    const X = this.cols;
+    for (let q = 0; q < 9; q += 1) X[q] = q % 4 === 0 ? 1 : 0;
+    for (let c = 0; c < 3; c += 1) this.ldlSolve(o9, 3, 3 * p, X, 3 * c);
+    for (let r = 0; r < 3; r += 1) for (let c = 0; c < 3; c += 1) A[o9 + 3 * r + c] = X[3 * c + r];
     return 1;
   }
 
@@ -419,6 +546,10 @@ export class JointChain {
    * node's M̃⁻¹ Jᵀ Δλ into `acc` (6 per body node, of `bodyNodes`).
    */
   solve(bodyNodes: number): void {
+    if (this.wide === 1) {
+      this.solveWide(bodyNodes);
+      return;
+    }
     const P = this.count;
     const x = this.vec;
     const L = this.L;
@@ -473,6 +604,286 @@ export class JointChain {
         const u0 = (2 * p + side) * 18;
         const a0 = 6 * node;
         for (let e = 0; e < 6; e += 1) acc[a0 + e] += U[u0 + 3 * e] * l0 + U[u0 + 3 * e + 1] * l1 + U[u0 + 3 * e + 2] * l2;
+      }
+    }
+  }
+  // ---- the general path: joints of any width m_p, bodies of n + k unknowns ----
+
+  /**
+   * `factor` for joints of any width: U = M̃⁻¹ Gᵀ per side (bs × m_p, row-major), A_pp and
+   * A_p,p−1 from G U, L_p = A_p,p−1 D_p−1⁻¹ (each row by the LDLᵀ of D_p−1), D_p = A_pp − L_p A_p,p−1ᵀ,
+   * and each D_p's LDLᵀ (redundant rows dropped); 0 when a block is not semi-definite.
+   */
+  private factorWide(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
+    const P = this.count;
+    const { n, k, bs } = this;
+    const kk1 = 1 + k * k;
+    const stiffness = this.stiffness;
+    const rows = js.rows;
+    const RS = js.RS;
+    const bi = this.bodyInv;
+    const g = this.bodyG;
+    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
+    if (stiffness > 0) {
+      for (let p = 0; p < P; p += 1) {
+        const j = this.pJoint[p];
+        const nA = this.sNode[2 * p];
+        const nB = this.sNode[2 * p + 1];
+        if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
+        if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
+      }
+    }
+    const iso = this.bodyIso;
+    for (let i = 0; i < bodyNodes; i += 1) {
+      const slot = nRef[i];
+      const o = kk1 * i;
+      bi[o] = sb.invMass[slot];
+      const gi = g[i] * stiffness;
+      // A body whose inertia is the same in every plane (balls, cubes): M̃'s angular inverse is a
+      // scalar, k products a row instead of k² (and no k × k inverse).
+      const s = sb.isoInvInertia[slot];
+      iso[i] = s > 0 ? (gi > 0 ? 1 / (sb.inertia[slot * k * k] + gi) : s) : -1;
+      if (s > 0) continue;
+      if (gi > 0) {
+        // (I_world + g·1)⁻¹ (symmetric positive definite).
+        const K = this.kblk;
+        for (let q = 0, at = slot * k * k; q < k * k; q += 1) K[q] = sb.inertia[at + q];
+        for (let a = 0; a < k; a += 1) K[a * k + a] += gi;
+        this.invertSpd(K, k, bi, o + 1);
+      } else {
+        const II = sb.invInertia;
+        for (let q = 0, at = slot * k * k; q < k * k; q += 1) bi[o + 1 + q] = II[at + q];
+      }
+    }
+    const U = this.U;
+    const G = this.G;
+    const off = this.off;
+    const L = this.L;
+    const Dm = this.Dinv;
+    const gs = this.mMax * bs;
+    for (let p = 0; p < P; p += 1) {
+      const j = this.pJoint[p];
+      const first = js.jFirst[j];
+      const m = js.jBlock[j];
+      const v0 = this.vOff[p];
+      const d0 = this.dOff[p];
+      for (let q = 0; q < m * m; q += 1) Dm[d0 + q] = 0;
+      for (let side = 0; side < 2; side += 1) {
+        const node = this.sNode[2 * p + side];
+        if (node < 0) continue;
+        const sg = side === 1 ? 1 : -1;
+        const oj = side === 1 ? js.OFF_JB : js.OFF_JA;
+        const u0 = (2 * v0 + side * m) * bs;
+        const g0 = side * gs;
+        const b0 = kk1 * node;
+        const im = bi[b0];
+        const si = iso[node];
+        for (let r = 0; r < m; r += 1) {
+          const base = (first + r) * RS;
+          const gr = g0 + r * bs;
+          for (let d = 0; d < n; d += 1) {
+            const x = sg * rows[base + d];
+            G[gr + d] = x;
+            U[u0 + d * m + r] = x * im;
+          }
+          for (let a = 0; a < k; a += 1) G[gr + n + a] = sg * rows[base + oj + a];
+          if (si >= 0) {
+            for (let a = 0; a < k; a += 1) U[u0 + (n + a) * m + r] = si * G[gr + n + a];
+            continue;
+          }
+          for (let a = 0; a < k; a += 1) {
+            let sum = 0;
+            for (let b = 0; b < k; b += 1) sum += bi[b0 + 1 + a * k + b] * G[gr + n + b];
+            U[u0 + (n + a) * m + r] = sum;
+          }
+        }
+        // A_pp += G U, its upper triangle (all the LDLᵀ reads).
+        for (let r = 0; r < m; r += 1) {
+          const gr = g0 + r * bs;
+          for (let c = r; c < m; c += 1) {
+            let sum = 0;
+            for (let e = 0; e < bs; e += 1) sum += G[gr + e] * U[u0 + e * m + c];
+            Dm[d0 + r * m + c] += sum;
+          }
+        }
+      }
+      let big = 0;
+      for (let r = 0; r < m; r += 1) if (Dm[d0 + r * m + r] > big) big = Dm[d0 + r * m + r];
+      if (this.pLink[p] === 1) {
+        const jp = this.pJoint[p - 1];
+        const mp = js.jBlock[jp];
+        const c0 = this.cOff[p];
+        const g0 = gs * this.pSide[p];
+        const up = (2 * this.vOff[p - 1] + this.pPrevSide[p] * mp) * bs;
+        for (let r = 0; r < m; r += 1) {
+          const gr = g0 + r * bs;
+          for (let c = 0; c < mp; c += 1) {
+            let sum = 0;
+            for (let e = 0; e < bs; e += 1) sum += G[gr + e] * U[up + e * mp + c];
+            off[c0 + r * mp + c] = sum;
+            L[c0 + r * mp + c] = sum;
+          }
+          this.ldlSolve(this.dOff[p - 1], mp, this.vOff[p - 1], L, c0 + r * mp);
+        }
+        for (let r = 0; r < m; r += 1) {
+          let cut = 0;
+          for (let q = 0; q < mp; q += 1) cut += Math.abs(L[c0 + r * mp + q] * off[c0 + r * mp + q]);
+          this.size[r] = big + cut;
+          for (let c = r; c < m; c += 1) {
+            let sum = 0;
+            for (let q = 0; q < mp; q += 1) sum += L[c0 + r * mp + q] * off[c0 + c * mp + q];
+            Dm[d0 + r * m + c] -= sum;
+          }
+        }
+      } else {
+        for (let r = 0; r < m; r += 1) this.size[r] = big;
+      }
+      if (this.ldlFactor(d0, m, v0) === 0) return 0;
+    }
+    return 1;
+  }
+
+  /**
+   * The LDLᵀ of the symmetric m × m block at Dinv[d0] (its upper triangle is read): L_rj into the
+   * lower triangle, 1 / d_j into rd[r0 + j], 0 for a dropped pivot (within ±CHAIN_TOLERANCE of
+   * `size`[j] plus the terms that cancelled in it). Returns 0 when a pivot is below minus that.
+   * (The sizes are a field, not arguments: a double passed to a call that is not inlined is
+   * boxed, an allocation per call.)
+   */
+  private ldlFactor(d0: number, m: number, r0: number): number {
+    const A = this.Dinv;
+    const rd = this.rd;
+    for (let j = 0; j < m; j += 1) {
+      let d = A[d0 + j * m + j];
+      let size = this.size[j];
+      for (let q = 0; q < j; q += 1) {
+        const l = A[d0 + j * m + q];
+        const t = l * l * rd[r0 + q];
+        d -= t;
+        size += t;
+      }
+      const tol = size * CHAIN_TOLERANCE;
+      if (!(d > tol)) {
+        // Not clearly positive: below −tol (or NaN) the block is not semi-definite; within ±tol a
+        // redundant row, dropped (1 / d := 0, its column of L zero).
+        if (!(d >= -tol)) return 0;
+        rd[r0 + j] = 0;
+        for (let r = j + 1; r < m; r += 1) A[d0 + r * m + j] = 0;
+        continue;
+      }
+      rd[r0 + j] = d;
+      for (let r = j + 1; r < m; r += 1) {
+        let sum = A[d0 + j * m + r];
+        for (let q = 0; q < j; q += 1) sum -= A[d0 + r * m + q] * A[d0 + j * m + q] * rd[r0 + q];
+        A[d0 + r * m + j] = sum / d;
+      }
+    }
+    for (let j = 0; j < m; j += 1) if (rd[r0 + j] !== 0) rd[r0 + j] = 1 / rd[r0 + j];
+    return 1;
+  }
+
+  /** x ← D⁻¹ x (D⁺: a dropped pivot's 1 / d_j is 0) for the LDLᵀ at Dinv[d0] (m × m, 1 / d_j at rd[r0]), x the m entries at X[x0]. */
+  private ldlSolve(d0: number, m: number, r0: number, X: Float64Array, x0: number): void {
+    const A = this.Dinv;
+    const rd = this.rd;
+    for (let r = 1; r < m; r += 1) {
+      let sum = X[x0 + r];
+      for (let q = 0; q < r; q += 1) sum -= A[d0 + r * m + q] * X[x0 + q];
+      X[x0 + r] = sum;
+    }
+    for (let r = m - 1; r >= 0; r -= 1) {
+      let sum = X[x0 + r] * rd[r0 + r];
+      for (let q = r + 1; q < m; q += 1) sum -= A[d0 + q * m + r] * X[x0 + q];
+      X[x0 + r] = sum;
+    }
+  }
+
+  /**
+   * The inverse of the symmetric positive definite k × k in K (destroyed) into out[o..o + k²], by
+   * its Cholesky factor (K = C Cᵀ, C in K's lower triangle): column by column.
+   */
+  private invertSpd(K: Float64Array, k: number, out: Float64Array, o: number): void {
+    for (let j = 0; j < k; j += 1) {
+      let d = K[j * k + j];
+      for (let q = 0; q < j; q += 1) d -= K[j * k + q] * K[j * k + q];
+      const c = Math.sqrt(d);
+      K[j * k + j] = c;
+      for (let r = j + 1; r < k; r += 1) {
+        let sum = K[r * k + j];
+        for (let q = 0; q < j; q += 1) sum -= K[r * k + q] * K[j * k + q];
+        K[r * k + j] = sum / c;
+      }
+    }
+    for (let col = 0; col < k; col += 1) {
+      // C y = e_col, then Cᵀ x = y, into column `col` of out.
+      for (let r = 0; r < k; r += 1) {
+        let sum = r === col ? 1 : 0;
+        for (let q = 0; q < r; q += 1) sum -= K[r * k + q] * out[o + q * k + col];
+        out[o + r * k + col] = sum / K[r * k + r];
+      }
+      for (let r = k - 1; r >= 0; r -= 1) {
+        let sum = out[o + r * k + col];
+        for (let q = r + 1; q < k; q += 1) sum -= K[q * k + r] * out[o + q * k + col];
+        out[o + r * k + col] = sum / K[r * k + r];
+      }
+    }
+  }
+
+  /** `solve` for joints of any width. */
+  private solveWide(bodyNodes: number): void {
+    const P = this.count;
+    const bs = this.bs;
+    const x = this.vec;
+    const L = this.L;
+    const vOff = this.vOff;
+    const link = this.pLink;
+    // L z = c.
+    for (let p = 1; p < P; p += 1) {
+      if (link[p] === 0) continue;
+      const v = vOff[p];
+      const vp = vOff[p - 1];
+      const m = vOff[p + 1] - v;
+      const mp = v - vp;
+      const c0 = this.cOff[p];
+      for (let r = 0; r < m; r += 1) {
+        let sum = 0;
+        for (let q = 0; q < mp; q += 1) sum += L[c0 + r * mp + q] * x[vp + q];
+        x[v + r] -= sum;
+      }
+    }
+    // w = D⁻¹ z.
+    for (let p = 0; p < P; p += 1) this.ldlSolve(this.dOff[p], vOff[p + 1] - vOff[p], vOff[p], x, vOff[p]);
+    // Lᵀ x = w.
+    for (let p = P - 1; p >= 1; p -= 1) {
+      if (link[p] === 0) continue;
+      const v = vOff[p];
+      const vp = vOff[p - 1];
+      const m = vOff[p + 1] - v;
+      const mp = v - vp;
+      const c0 = this.cOff[p];
+      for (let q = 0; q < mp; q += 1) {
+        let sum = 0;
+        for (let r = 0; r < m; r += 1) sum += L[c0 + r * mp + q] * x[v + r];
+        x[vp + q] -= sum;
+      }
+    }
+    // Δv = M̃⁻¹ Jᵀ Δλ per body.
+    const acc = this.acc;
+    for (let q = 0; q < bs * bodyNodes; q += 1) acc[q] = 0;
+    const U = this.U;
+    for (let p = 0; p < P; p += 1) {
+      const v = vOff[p];
+      const m = vOff[p + 1] - v;
+      for (let side = 0; side < 2; side += 1) {
+        const node = this.sNode[2 * p + side];
+        if (node < 0) continue;
+        const u0 = (2 * v + side * m) * bs;
+        const a0 = bs * node;
+        for (let e = 0; e < bs; e += 1) {
+          let sum = 0;
+          for (let r = 0; r < m; r += 1) sum += U[u0 + e * m + r] * x[v + r];
+          acc[a0 + e] += sum;
+        }
       }
     }
   }

@@ -26,10 +26,10 @@
  *   Gauss–Seidel solver; the rest of the forest is still solved directly.
  * - Only the equality rows take part; limits, ropes, struts and motors are solved by the
  *   Gauss–Seidel passes around it.
- * - A forest made of chains of point joints in 3D is factored and solved in joint space instead
- *   (`JointChain`, block-tridiagonal in 3 × 3 blocks: a factorisation in about a third of the
- *   time); where that factorisation meets a pivot block that is not clearly positive definite,
- *   this one is used.
+ * - A forest made of chains (joints of any width, in any n) is factored and solved in joint space
+ *   instead (`JointChain`, block-tridiagonal in m_p × m_q blocks; point joints in 3D by 3 × 3
+ *   blocks: a factorisation in about a third of the time); redundant rows are dropped there,
+ *   and only a pivot block that is not even positive semi-definite hands the factorisation here.
  *
  * Storage is flat and grows by doubling; nothing is allocated once the scene has been seen.
  *
@@ -845,8 +845,10 @@ export class JointTree {
     const chain = this.chain;
     const P = chain.count;
     const vec = chain.vec;
+    const vOff = chain.vOff;
+    const { n, k, bs } = this;
     // c for each row (−(Ċ + bias) or target − C), in path order.
-    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, 3 * p, positions, this.rowSpeed);
+    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, vOff[p], positions, this.rowSpeed);
     const B = this.bodyNodes;
     chain.solve(B);
     const acc = chain.acc;
@@ -855,31 +857,27 @@ export class JointTree {
       const dx = js.pA;
       const dθ = js.ja;
       for (let i = 0; i < B; i += 1) {
-        const a0 = 6 * i;
-        for (let d = 0; d < 3; d += 1) {
-          dx[d] = acc[a0 + d];
-          dθ[d] = acc[a0 + 3 + d];
-        }
+        const a0 = bs * i;
+        for (let d = 0; d < n; d += 1) dx[d] = acc[a0 + d];
+        for (let p = 0; p < k; p += 1) dθ[p] = acc[a0 + n + p];
         js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
       }
       return;
     }
     const lambda = js.lambdaRow;
     for (let p = 0; p < P; p += 1) {
-      const first = js.jFirst[chain.pJoint[p]];
-      lambda[first] += vec[3 * p];
-      lambda[first + 1] += vec[3 * p + 1];
-      lambda[first + 2] += vec[3 * p + 2];
+      const j = chain.pJoint[p];
+      const first = js.jFirst[j];
+      const v = vOff[p];
+      for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] += vec[v + r];
     }
     const V = sb.v;
     const W = sb.w;
     for (let i = 0; i < B; i += 1) {
       const slot = this.nRef[i];
-      const a0 = 6 * i;
-      for (let d = 0; d < 3; d += 1) {
-        V[slot * 3 + d] += acc[a0 + d];
-        W[slot * 3 + d] += acc[a0 + 3 + d];
-      }
+      const a0 = bs * i;
+      for (let d = 0; d < n; d += 1) V[slot * n + d] += acc[a0 + d];
+      for (let p = 0; p < k; p += 1) W[slot * k + p] += acc[a0 + n + p];
     }
   }
 

@@ -23,7 +23,7 @@
 import { describe, expect, it } from 'vitest';
 import { Body, HyperSphere } from '@physin/engine';
 import { makeWorld } from './support/scenes.js';
-import { buildChain, pointJointScene, runChain, snapshot } from './support/joints.js';
+import { U_CHAIN_POINTS, buildChain, pointJointScene, runChain, snapshot } from './support/joints.js';
 import type { JointScene, PointJointSpec } from './support/joints.js';
 
 const DT = 1 / 60;
@@ -50,19 +50,7 @@ function polyline(points: number[][], start: number[], end: number[] | null, twi
   return pointJointScene(world, bodies, joints);
 }
 
-const uChain = (): JointScene =>
-  polyline(
-    [
-      [0, -0.5, 0],
-      [0, -1.5, 0],
-      [0.5, -2, 0],
-      [1.5, -2, 0],
-      [2, -1.5, 0.2],
-      [2, -0.5, 0],
-    ],
-    [0, 0, 0],
-    [2, 0, 0],
-  );
+const uChain = (): JointScene => polyline(U_CHAIN_POINTS, [0, 0, 0], [2, 0, 0]);
 const tautChain = (): JointScene =>
   polyline(
     Array.from({ length: 5 }, (_, i) => [i + 0.5, 0, 0]),

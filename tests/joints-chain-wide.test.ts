@@ -25,7 +25,7 @@
 import { describe, expect, it } from 'vitest';
 import { FixedJoint, HingeJoint, PointJoint } from '@physin/engine';
 import type { Joint } from '@physin/engine';
-import { jointPath, lockedAngleError, snapshot } from './support/joints.js';
+import { U_CHAIN_POINTS, jointPath, lockedAngleError, snapshot } from './support/joints.js';
 import type { JointMaker, JointPath } from './support/joints.js';
 import { randomUnitVector, seeded } from './support/random.js';
 
@@ -36,16 +36,6 @@ const BOUND_WHIP_POINT = 1e-12;
 const BOUND_WHIP_ANGLE = 5e-15;
 const BOUND_4D = 2e-12;
 const BOUND_2D = 2e-12;
-
-/** The U of the chain-space test: 6 links, pinned at (0, 0, 0) and (2, 0, 0). */
-const U_POINTS = [
-  [0, -0.5, 0],
-  [0, -1.5, 0],
-  [0.5, -2, 0],
-  [1.5, -2, 0],
-  [2, -1.5, 0.2],
-  [2, -0.5, 0],
-];
 
 /** Per joint: its free plane (unit bivector in a's frame), null for a joint without angular rows or a weld. */
 interface Scene extends JointPath {
@@ -62,7 +52,7 @@ function hingeU(): Scene {
   const rand = seeded(7);
   const planes = Array.from({ length: 7 }, () => randomUnitVector(rand, 3));
   const make: JointMaker = (i, a, la, b, lb) => new HingeJoint(a, b, la, lb, { plane: planes[i]! });
-  return scene(jointPath(U_POINTS, [0, 0, 0], [2, 0, 0], make), planes);
+  return scene(jointPath(U_CHAIN_POINTS, [0, 0, 0], [2, 0, 0], make), planes);
 }
 
 const X_PLANE = Float64Array.of(1, 0, 0); // the plane (x y): the hinges swing in the vertical plane
@@ -74,8 +64,8 @@ const TILTED = Float64Array.of(1 / Math.hypot(1, 0.3), 0.3 / Math.hypot(1, 0.3),
 function planarU(): Scene {
   const make: JointMaker = (_i, a, la, b, lb) => new HingeJoint(a, b, la, lb, { plane: X_PLANE });
   return scene(
-    jointPath(U_POINTS, [0, 0, 0], [2, 0, 0], make),
-    U_POINTS.concat([[0, 0, 0]]).map(() => X_PLANE),
+    jointPath(U_CHAIN_POINTS, [0, 0, 0], [2, 0, 0], make),
+    U_CHAIN_POINTS.concat([[0, 0, 0]]).map(() => X_PLANE),
   );
 }
 
@@ -87,8 +77,8 @@ function weldedU(n = 3): Scene {
   const make: JointMaker = (_i, a, la, b, lb) => new FixedJoint(a, b, la, lb);
   const pad = (p: number[]): number[] => p.concat(new Array<number>(n - 3).fill(0));
   return scene(
-    jointPath(U_POINTS.map(pad), pad([0, 0, 0]), pad([2, 0, 0]), make),
-    U_POINTS.concat([[0, 0, 0]]).map(() => null),
+    jointPath(U_CHAIN_POINTS.map(pad), pad([0, 0, 0]), pad([2, 0, 0]), make),
+    U_CHAIN_POINTS.concat([[0, 0, 0]]).map(() => null),
   );
 }
 
@@ -169,8 +159,8 @@ describe('chains of joints of any width in joint space', () => {
 
   it('the U with every hinge about z (3 redundant rows): it swings down, every joint closed to rounding over 3 s', () => {
     // The joint-space LDLᵀ drops the last joint's 3 redundant pivots (|d| below 7e-15 of their size,
-    // every kept one above 1.5e-3): 9.2e-16 m and 4.7e-25 rad measured; chain-wide58 handed these
-    // sub-steps to the tree, which opened it 3.1 m.
+    // every kept one above 1.5e-3): 9.2e-16 m and 4.7e-25 rad measured; when redundant rows failed the
+    // factorisation, these sub-steps went to the tree, which opened the U 3.1 m.
     const r = run(planarU(), 180);
     report('planar hinge U', r);
     expect(r.point).toBeLessThan(2e-15);
@@ -180,7 +170,7 @@ describe('chains of joints of any width in joint space', () => {
 
   it('the U welded together and to the world at both ends (3D, 4D: all of the last weld redundant) holds to rounding over 3 s', () => {
     // The last weld's pivots are dropped. 3D: 3.2e-16 m and 2.4e-16 rad measured, no body moves
-    // more than 3.1e-16 m (chain-wide58 handed these sub-steps to the tree: 2.7e-3 m); 4D: 3.2e-16 m and
+    // more than 3.1e-16 m (before, the tree took these sub-steps: 2.7e-3 m); 4D: 3.2e-16 m and
     // 2.3e-16 rad, no body moves more than 2.5e-16 m (the tree: 9.4e10 m, the U thrown apart).
     for (const n of [3, 4]) {
       const s = weldedU(n);

@@ -80,6 +80,19 @@ export function unwrap(prev: number, next: number): number {
   return prev + d - 2 * Math.PI * Math.round(d / (2 * Math.PI));
 }
 
+/**
+ * The bodies' centres of a U of 6 links in 3D, to be pinned at (0, 0, 0) and (2, 0, 0): one
+ * link set 0.2 m off the plane, so the U swings down out of its start.
+ */
+export const U_CHAIN_POINTS: number[][] = [
+  [0, -0.5, 0],
+  [0, -1.5, 0],
+  [0.5, -2, 0],
+  [1.5, -2, 0],
+  [2, -1.5, 0.2],
+  [2, -0.5, 0],
+];
+
 /** A joint scene: its world, bodies, and the worst joint error now (m). */
 export interface JointScene {
   world: World;

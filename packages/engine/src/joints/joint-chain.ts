@@ -331,6 +331,24 @@ export class JointChain {
   }
 
   /**
+   * Each body node's Σ|λ||J_angular| over its joints into `bodyG` (0 unless `stiffness` asks for
+   * the geometric stiffness). `stiffness` is read here, not passed: a double passed to a call V8
+   * does not inline is boxed, an allocation per call.
+   */
+  private gatherLoads(js: JointSolver, bodyNodes: number): void {
+    const g = this.bodyG;
+    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
+    if (!(this.stiffness > 0)) return;
+    for (let p = 0; p < this.count; p += 1) {
+      const j = this.pJoint[p];
+      const nA = this.sNode[2 * p];
+      const nB = this.sNode[2 * p + 1];
+      if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
+      if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
+    }
+  }
+
+  /**
    * Assembles A's blocks from the rows and the bodies' inverse mass and inertia (with the
    * geometric stiffness `stiffness`·Σ|λ||J_angular| on the angular diagonal of M̃)
    * and factors A = L D Lᵀ along each path, redundant rows' pivots dropped. Returns 1, or 0 when a
@@ -344,16 +362,7 @@ export class JointChain {
     const RS = js.RS;
     const bi = this.bodyInv;
     const g = this.bodyG;
-    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
-    if (stiffness > 0) {
-      for (let p = 0; p < P; p += 1) {
-        const j = this.pJoint[p];
-        const nA = this.sNode[2 * p];
-        const nB = this.sNode[2 * p + 1];
-        if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
-        if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
-      }
-    }
+    this.gatherLoads(js, bodyNodes);
     for (let i = 0; i < bodyNodes; i += 1) {
       const slot = nRef[i];
       const o = 10 * i;
@@ -623,16 +632,7 @@ export class JointChain {
     const RS = js.RS;
     const bi = this.bodyInv;
     const g = this.bodyG;
-    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
-    if (stiffness > 0) {
-      for (let p = 0; p < P; p += 1) {
-        const j = this.pJoint[p];
-        const nA = this.sNode[2 * p];
-        const nB = this.sNode[2 * p + 1];
-        if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
-        if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
-      }
-    }
+    this.gatherLoads(js, bodyNodes);
     const iso = this.bodyIso;
     for (let i = 0; i < bodyNodes; i += 1) {
       const slot = nRef[i];

@@ -1,7 +1,8 @@
 // Measures what World.step allocates in steady state. Run by tests/engine-allocation.test.ts as
 //   node --no-concurrent-recompilation --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 \
 //     tests/engine-allocation.mjs STEPS SCENE
-// with SCENE one of 3, 4 (100 free bodies), stack3, stack4 (resting contacts), joints3, joints4.
+// with SCENE one of 3, 4 (100 free bodies), stack3, stack4 (resting contacts), joints3, joints4,
+// chains3 (point-joint chains only: the 3 × 3 joint-space path).
 // It imports the BUILT engine (dist/), as an application would, and prints one JSON line.
 //
 // One scene per process: the step's functions are then optimised for one world, as in an
@@ -182,6 +183,27 @@ function makeJointWorld(n) {
   return world;
 }
 
+/**
+ * Point-joint chains in 3D, and nothing else jointed: the forest is solved by the joint-space
+ * path in 3 × 3 blocks (joints4's mixed widths take the general one). A chain of 10 pinned at one
+ * end whips; a taut chain of 5 pinned at both ends has redundant rows (pivots dropped).
+ */
+function makeChainWorld() {
+  const D = dims(3);
+  const world = new World({ dimensions: 3, gravity: [0, -9.81, 0], params: { allowSleep: false } });
+  const ball = () => HyperSphere(D, 0.1);
+  const whip = [];
+  for (let i = 0; i < 10; i += 1) whip.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: [i + 0.5, 0, 0] })));
+  world.addConstraint(new PointJoint(whip[0], null, [-0.5, 0, 0], [0, 0, 0]));
+  for (let i = 1; i < 10; i += 1) world.addConstraint(new PointJoint(whip[i - 1], whip[i], [0.5, 0, 0], [-0.5, 0, 0]));
+  const taut = [];
+  for (let i = 0; i < 5; i += 1) taut.push(world.addBody(new Body(D, { shape: ball(), mass: 1, position: [i + 0.5, 0, 20] })));
+  world.addConstraint(new PointJoint(taut[0], null, [-0.5, 0, 0], [0, 0, 20]));
+  for (let i = 1; i < 5; i += 1) world.addConstraint(new PointJoint(taut[i - 1], taut[i], [0.5, 0, 0], [-0.5, 0, 0]));
+  world.addConstraint(new PointJoint(taut[4], null, [0.5, 0, 0], [5, 0, 20]));
+  return world;
+}
+
 const gcs = [];
 const observer = new PerformanceObserver((list) => {
   for (const entry of list.getEntries()) gcs.push({ start: entry.startTime, kind: entry.detail?.kind ?? entry.kind });
@@ -202,6 +224,7 @@ const scenes = [
   ['stack4', () => makeStackWorld(4)],
   ['joints3', () => makeJointWorld(3)],
   ['joints4', () => makeJointWorld(4)],
+  ['chains3', () => makeChainWorld()],
 ];
 const only = process.argv[3];
 if (!scenes.some(([name]) => name === only)) {

@@ -74,7 +74,7 @@ function expectQuietWindows(windows: readonly { collections: number; newSpace: n
 }
 
 /** The scenes of tests/engine-allocation.mjs, each measured in a child process of its own. */
-const SCENES = ['3', '4', 'stack3', 'stack4', 'joints3', 'joints4'];
+const SCENES = ['3', '4', 'stack3', 'stack4', 'joints3', 'joints4', 'chains3'];
 
 beforeAll(() => {
   ensureBuiltEngine();
@@ -126,4 +126,10 @@ describe('World.step allocates nothing in steady state (built engine, child proc
       expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
     });
   }
+  it('n = 3: 10 000 steps of point-joint chains alone (a whipping chain of 10, a taut chain of 5 pinned at both ends: the 3 × 3 joint-space path, redundant pivots dropped): the same bounds', () => {
+    const r = results.chains3!;
+    expect(r.joints).toBe(16);
+    expectQuietWindows(r.windows);
+    expect(Math.min(...r.windows.map((w) => w.bytes))).toBeLessThan(64 * 1024);
+  });
 });

@@ -30,6 +30,8 @@
  *   instead (`JointChain`, block-tridiagonal in m_p × m_q blocks; point joints in 3D by 3 × 3
  *   blocks: a factorisation in about a third of the time); redundant rows are dropped there,
  *   and only a pivot block that is not even positive semi-definite hands the factorisation here.
+ *   Any other forest (a body with three or more tree joints) is factored in joint space leaves
+ *   first (`JointSpaceTree`, no fill-in), with the same rule: this node LU is the fallback only.
  *
  * Storage is flat and grows by doubling; nothing is allocated once the scene has been seen.
  *
@@ -39,6 +41,7 @@ import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
 import { geometricLoad, JointChain, type ForestLinks } from './joint-chain.js';
+import { JointSpaceTree } from './joint-space.js';
 import type { JointSolver } from './joint-solver.js';
 
 /** Relative size below which a pivot of a node block counts as zero. */
@@ -114,7 +117,7 @@ export class JointTree {
   private lastLen = -1;
   /**
    * 1 while the factorisation of the input recorded in `lastIn` on this forest is held (in
-   * `mat`, or in `chain` when `useChain` is 1).
+   * `mat`, in `chain` when `useChain` is 1, in `branch` when 2).
    */
   private lastOk = 0;
   /** The joint-space solver of a forest of chains. */
@@ -123,9 +126,13 @@ export class JointTree {
   private readonly links: ForestLinks;
   /** 1 when the forest is made of chains `chain` takes (set by `build`). */
   private chainOk = 0;
+  /** The joint-space solver of a branching forest (the forests `chain` does not take). */
+  private readonly branch: JointSpaceTree;
+  /** 1 when `branch` takes the forest (set by `build`). */
+  private branchOk = 0;
   /** Count of body nodes (numbered first, 0 … bodyNodes − 1). */
   private bodyNodes = 0;
-  /** 1 when the current factorisation is the chain's (0: the forest's, in `mat`). */
+  /** 1 when the current factorisation is the chain's, 2 the branching forest's (0: the tree's, in `mat`). */
   private useChain = 0;
 
   constructor(D: Dims) {
@@ -133,6 +140,7 @@ export class JointTree {
     this.k = D.k;
     this.bs = D.n + D.k;
     this.chain = new JointChain(D);
+    this.branch = new JointSpaceTree(D);
     this.links = {
       slotNode: this.slotNode,
       nRef: this.nRef,
@@ -157,6 +165,7 @@ export class JointTree {
     // A new forest: the factorisation `mat` holds is not of it (see `sameInput`).
     this.lastOk = 0;
     this.chainOk = 0;
+    this.branchOk = 0;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -301,6 +310,7 @@ export class JointTree {
     links.fold = this.fold;
     links.foldNext = this.foldNext;
     this.chainOk = this.chain.build(js, this.role, bodyNodes, links);
+    if (this.chainOk === 0) this.branchOk = this.branch.build(js, this.role, bodyNodes, links);
     return this.treeJoints;
   }
 
@@ -585,6 +595,12 @@ export class JointTree {
       this.useChain = chain.factor(js, sb, this.bodyNodes, this.nRef);
       chain.stiffness = 0;
       if (this.useChain === 1) return;
+    } else if (this.branchOk === 1) {
+      const branch = this.branch;
+      branch.stiffness = this.stiffness;
+      this.useChain = 2 * branch.factor(js, sb, this.bodyNodes, this.nRef);
+      branch.stiffness = 0;
+      if (this.useChain === 2) return;
     } else {
       this.useChain = 0;
     }
@@ -796,6 +812,10 @@ export class JointTree {
       this.chainSolve(js, sb, 0);
       return;
     }
+    if (this.useChain === 2) {
+      this.branchSolve(js, sb, 0);
+      return;
+    }
     this.rhs(js, sb, 0);
     this.solveVec();
     const { n, k } = this;
@@ -822,6 +842,10 @@ export class JointTree {
       this.chainSolve(js, sb, 1);
       return;
     }
+    if (this.useChain === 2) {
+      this.branchSolve(js, sb, 1);
+      return;
+    }
     this.rhs(js, sb, 1);
     this.solveVec();
     const { n, k } = this;
@@ -843,6 +867,50 @@ export class JointTree {
    */
   private chainSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
     const chain = this.chain;
+    const P = chain.count;
+    const vec = chain.vec;
+    const vOff = chain.vOff;
+    const { n, k, bs } = this;
+    // c for each row (−(Ċ + bias) or target − C), in path order.
+    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, vOff[p], positions, this.rowSpeed);
+    const B = this.bodyNodes;
+    chain.solve(B);
+    const acc = chain.acc;
+    if (positions === 1) {
+      // A projection moves the poses only: its Δλ is no impulse (as the tree's `solvePositions`).
+      const dx = js.pA;
+      const dθ = js.ja;
+      for (let i = 0; i < B; i += 1) {
+        const a0 = bs * i;
+        for (let d = 0; d < n; d += 1) dx[d] = acc[a0 + d];
+        for (let p = 0; p < k; p += 1) dθ[p] = acc[a0 + n + p];
+        js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
+      }
+      return;
+    }
+    const lambda = js.lambdaRow;
+    for (let p = 0; p < P; p += 1) {
+      const j = chain.pJoint[p];
+      const first = js.jFirst[j];
+      const v = vOff[p];
+      for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] += vec[v + r];
+    }
+    const V = sb.v;
+    const W = sb.w;
+    for (let i = 0; i < B; i += 1) {
+      const slot = this.nRef[i];
+      const a0 = bs * i;
+      for (let d = 0; d < n; d += 1) V[slot * n + d] += acc[a0 + d];
+      for (let p = 0; p < k; p += 1) W[slot * k + p] += acc[a0 + n + p];
+    }
+  }
+
+  /**
+   * The solve of `solveVelocities` (`positions` 0) or `solvePositions` (1) by the branching
+   * forest's joint-space factorisation (`chainSolve` for `branch`, kept apart so each call site sees one class): Δλ from A Δλ = c, each body moved by M̃⁻¹ Jᵀ Δλ, and (velocities) λ += Δλ.
+   */
+  private branchSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
+    const chain = this.branch;
     const P = chain.count;
     const vec = chain.vec;
     const vOff = chain.vOff;

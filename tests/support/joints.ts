@@ -272,3 +272,36 @@ export function lockedAngleError(D: Dims, a: Body, b: Body | null, free: ArrayLi
   for (let i = 1 + D.k; i < D.r; i += 1) s += Q[i]! ** 2;
   return 2 * Math.sqrt(s);
 }
+
+/** A joint tree: its world, bodies, joints, and per joint its bodies and anchors (b null: the world, lb a world point). */
+export interface JointTreeScene extends JointPath {
+  ends: [Body, number[], Body | null, number[]][];
+}
+
+/**
+ * Balls of 1 kg at `points` (y up, n = points[0].length), joined by `make` at the midpoints of the
+ * pairs in `edges` (body indices), then each body of `pins` joined to the world at its world
+ * point. Every body starts unturned, so each joint's rest relative rotor is the identity.
+ */
+export function jointTree(
+  points: number[][],
+  edges: [number, number][],
+  pins: [number, number[]][],
+  make: JointMaker,
+  params: Partial<Params> = {},
+): JointTreeScene {
+  const world = makeWorld(points[0]!.length, params);
+  const shape = HyperSphere(world.D, LINK_RADIUS);
+  const bodies = points.map((p) => world.addBody(new Body(world.D, { shape, mass: 1, position: p })));
+  const local = (i: number, at: number[]): number[] => at.map((v, d) => v - points[i]![d]!);
+  const joints: Joint[] = [];
+  const ends: [Body, number[], Body | null, number[]][] = [];
+  for (const [a, b] of edges) {
+    const mid = points[a]!.map((v, d) => 0.5 * (v + points[b]![d]!));
+    ends.push([bodies[a]!, local(a, mid), bodies[b]!, local(b, mid)]);
+  }
+  for (const [a, at] of pins) ends.push([bodies[a]!, local(a, at), null, at]);
+  ends.forEach(([a, la, b, lb], i) => joints.push(make(i, a, la, b, lb)));
+  for (const j of joints) world.addConstraint(j);
+  return { world, bodies, joints, ends };
+}

@@ -21,8 +21,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { FixedJoint, HingeJoint, PointJoint } from '@physin/engine';
-import { jointTree, lockedAngleError, pointJointError, snapshot } from './support/joints.js';
-import type { JointMaker, JointTreeScene } from './support/joints.js';
+import { jointTree, lockedAngleError, pointJointError, runJointScene, snapshot } from './support/joints.js';
+import type { JointMaker, JointRun, JointTreeScene } from './support/joints.js';
 import { randomUnitVector, seeded } from './support/random.js';
 
 const DT = 1 / 60;
@@ -112,21 +112,10 @@ function errors(s: Scene): [number, number] {
   return [point, angle];
 }
 
-function run(s: Scene, steps: number): { point: number; angle: number; lowest: number } {
-  let point = 0;
-  let angle = 0;
-  let lowest = Infinity;
-  for (let t = 0; t < steps; t += 1) {
-    s.world.step(DT);
-    const [p, a] = errors(s);
-    point = Math.max(point, p);
-    angle = Math.max(angle, a);
-    for (const b of s.bodies) lowest = Math.min(lowest, b.x[1]!);
-  }
-  return { point, angle, lowest };
-}
+/** Steps the scene; the worst point gap and locked angle over every step end, and the lowest height a body reached. */
+const run = (s: Scene, steps: number): JointRun => runJointScene(s.world, s.bodies, steps, DT, () => errors(s));
 
-function report(label: string, r: { point: number; angle: number; lowest: number }): void {
+function report(label: string, r: JointRun): void {
   if (LOG)
     console.log(
       `${label}: point ${r.point.toExponential(2)} m, angle ${r.angle.toExponential(2)} rad, lowest ${r.lowest.toFixed(3)}`,

@@ -305,3 +305,35 @@ export function jointTree(
   for (const j of joints) world.addConstraint(j);
   return { world, bodies, joints, ends };
 }
+
+/** What `runJointScene` measured: the worst point gap (m) and locked angle (rad), the lowest height (m). */
+export interface JointRun {
+  point: number;
+  angle: number;
+  lowest: number;
+}
+
+/**
+ * Steps `world` `steps` times by `dt`; after each step, `errors` gives the scene's worst point gap
+ * and locked angle. Returns the worst of each over every step and the lowest height (x₁) any of
+ * `bodies` reached.
+ */
+export function runJointScene(
+  world: World,
+  bodies: readonly Body[],
+  steps: number,
+  dt: number,
+  errors: () => [number, number],
+): JointRun {
+  let point = 0;
+  let angle = 0;
+  let lowest = Infinity;
+  for (let t = 0; t < steps; t += 1) {
+    world.step(dt);
+    const [p, a] = errors();
+    point = Math.max(point, p);
+    angle = Math.max(angle, a);
+    for (const b of bodies) lowest = Math.min(lowest, b.x[1]!);
+  }
+  return { point, angle, lowest };
+}

@@ -35,55 +35,8 @@
 import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
+import { BLOCK_TOLERANCE, bodyChanges, bodyInverses, gatherLoads, ldlFactor, ldlSolve, sideBlock } from './joint-blocks.js';
 import type { JointSolver } from './joint-solver.js';
-
-/**
- * A pivot of a block D_p within this fraction of its size (the largest diagonal entry of its A_pp
- * plus what cancelled in it: the tree's LDL_TOLERANCE) is a redundant row's, and dropped; below
- * minus it the block is not semi-definite and the factorisation fails. The 3 × 3 path's cofactor
- * check measures against A_pp alone, and hands a block it rejects to `semiInverse`.
- */
-const CHAIN_TOLERANCE = 1e-8;
-
-/** The sum `geometricLoad` returns (0 + x is x, bit for bit). */
-const LOAD = new Float64Array(1);
-
-/**
- * |λ| · |J_angular| of joint j's equality rows on the body in `slot` (N·s·m): the size of the
- * torque the joint's last impulse exerts per radian the body turns (times h). λ is the impulse
- * the joint kept from its last solve (`Joint.lambda`).
- * @internal
- */
-export function geometricLoad(js: JointSolver, j: number, slot: number): number {
-  LOAD[0] = 0;
-  addGeometricLoad(js, j, slot, LOAD, 0);
-  return LOAD[0];
-}
-
-/**
- * out[at] += `geometricLoad`(js, j, slot), the sum made here: the factorisations that call this
- * are too large for V8 to inline `geometricLoad` into them, and the double it returned would be
- * boxed, an allocation per call (this returns nothing).
- * @internal
- */
-export function addGeometricLoad(js: JointSolver, j: number, slot: number, out: Float64Array, at: number): void {
-  const first = js.jFirst[j];
-  const m = js.jBlock[j];
-  const off = js.jB[j] === slot ? js.OFF_JB : js.OFF_JA;
-  const lam = js.joints[j].lambda;
-  const rows = js.rows;
-  const k = js.k;
-  let l2 = 0;
-  let a2 = 0;
-  for (let r = 0; r < m; r += 1) {
-    const q = first + r;
-    const l = lam[js.rowKey[q]];
-    l2 += l * l;
-    const base = q * js.RS + off;
-    for (let p = 0; p < k; p += 1) a2 += rows[base + p] * rows[base + p];
-  }
-  out[at] += Math.sqrt(l2 * a2);
-}
 
 /**
  * The node tables of `JointTree` that `JointChain.build` walks (see `JointTree` for each): the
@@ -331,24 +284,6 @@ export class JointChain {
   }
 
   /**
-   * Each body node's Σ|λ||J_angular| over its joints into `bodyG` (0 unless `stiffness` asks for
-   * the geometric stiffness). `stiffness` is read here, not passed: a double passed to a call V8
-   * does not inline is boxed, an allocation per call.
-   */
-  private gatherLoads(js: JointSolver, bodyNodes: number): void {
-    const g = this.bodyG;
-    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
-    if (!(this.stiffness > 0)) return;
-    for (let p = 0; p < this.count; p += 1) {
-      const j = this.pJoint[p];
-      const nA = this.sNode[2 * p];
-      const nB = this.sNode[2 * p + 1];
-      if (nA >= 0) addGeometricLoad(js, j, js.jA[j], g, nA);
-      if (nB >= 0) addGeometricLoad(js, j, js.jB[j], g, nB);
-    }
-  }
-
-  /**
    * Assembles A's blocks from the rows and the bodies' inverse mass and inertia (with the
    * geometric stiffness `stiffness`·Σ|λ||J_angular| on the angular diagonal of M̃)
    * and factors A = L D Lᵀ along each path, redundant rows' pivots dropped. Returns 1, or 0 when a
@@ -362,7 +297,7 @@ export class JointChain {
     const RS = js.RS;
     const bi = this.bodyInv;
     const g = this.bodyG;
-    this.gatherLoads(js, bodyNodes);
+    gatherLoads(js, this.count, this.pJoint, this.sNode, this.bodyG, bodyNodes, this.stiffness > 0 ? 1 : 0);
     for (let i = 0; i < bodyNodes; i += 1) {
       const slot = nRef[i];
       const o = 10 * i;
@@ -464,7 +399,7 @@ export class JointChain {
       }
       // D_p⁻¹ when D_p is clearly positive definite (its leading minors), else its generalised inverse.
       const a0 = D[0];
-      const tol = big * CHAIN_TOLERANCE;
+      const tol = big * BLOCK_TOLERANCE;
       this.inverse(Dinv, o9);
       const m2 = this.minors[0];
       if (!(a0 > tol) || !(m2 > tol * a0) || !(this.minors[1] > tol * m2)) {
@@ -489,10 +424,10 @@ export class JointChain {
       this.size[r] = big + cut;
       for (let c = r; c < 3; c += 1) A[o9 + 3 * r + c] = D[3 * r + c];
     }
-    if (this.ldlFactor(o9, 3, 3 * p) === 0) return 0;
+    if (ldlFactor(this.Dinv, o9, 3, this.rd, 3 * p, this.size) === 0) return 0;
     const X = this.cols;
     for (let q = 0; q < 9; q += 1) X[q] = q % 4 === 0 ? 1 : 0;
-    for (let c = 0; c < 3; c += 1) this.ldlSolve(o9, 3, 3 * p, X, 3 * c);
+    for (let c = 0; c < 3; c += 1) ldlSolve(this.Dinv, o9, 3, this.rd, 3 * p, X, 3 * c);
     for (let r = 0; r < 3; r += 1) for (let c = 0; c < 3; c += 1) A[o9 + 3 * r + c] = X[3 * c + r];
     return 1;
   }
@@ -625,36 +560,15 @@ export class JointChain {
    */
   private factorWide(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
     const P = this.count;
-    const { n, k, bs } = this;
-    const kk1 = 1 + k * k;
+    const { k, bs } = this;
     const stiffness = this.stiffness;
-    const rows = js.rows;
-    const RS = js.RS;
     const bi = this.bodyInv;
     const g = this.bodyG;
-    this.gatherLoads(js, bodyNodes);
+    gatherLoads(js, this.count, this.pJoint, this.sNode, this.bodyG, bodyNodes, this.stiffness > 0 ? 1 : 0);
+    // The stiffness scaled in here, not passed: a double argument is boxed (see joint-blocks.ts).
+    for (let i = 0; i < bodyNodes; i += 1) g[i] *= stiffness;
     const iso = this.bodyIso;
-    for (let i = 0; i < bodyNodes; i += 1) {
-      const slot = nRef[i];
-      const o = kk1 * i;
-      bi[o] = sb.invMass[slot];
-      const gi = g[i] * stiffness;
-      // A body whose inertia is the same in every plane (balls, cubes): M̃'s angular inverse is a
-      // scalar, k products a row instead of k² (and no k × k inverse).
-      const s = sb.isoInvInertia[slot];
-      iso[i] = s > 0 ? (gi > 0 ? 1 / (sb.inertia[slot * k * k] + gi) : s) : -1;
-      if (s > 0) continue;
-      if (gi > 0) {
-        // (I_world + g·1)⁻¹ (symmetric positive definite).
-        const K = this.kblk;
-        for (let q = 0, at = slot * k * k; q < k * k; q += 1) K[q] = sb.inertia[at + q];
-        for (let a = 0; a < k; a += 1) K[a * k + a] += gi;
-        this.invertSpd(K, k, bi, o + 1);
-      } else {
-        const II = sb.invInertia;
-        for (let q = 0, at = slot * k * k; q < k * k; q += 1) bi[o + 1 + q] = II[at + q];
-      }
-    }
+    bodyInverses(sb, nRef, bodyNodes, k, g, bi, iso, this.kblk);
     const U = this.U;
     const G = this.G;
     const off = this.off;
@@ -663,49 +577,13 @@ export class JointChain {
     const gs = this.mMax * bs;
     for (let p = 0; p < P; p += 1) {
       const j = this.pJoint[p];
-      const first = js.jFirst[j];
       const m = js.jBlock[j];
       const v0 = this.vOff[p];
       const d0 = this.dOff[p];
       for (let q = 0; q < m * m; q += 1) Dm[d0 + q] = 0;
       for (let side = 0; side < 2; side += 1) {
         const node = this.sNode[2 * p + side];
-        if (node < 0) continue;
-        const sg = side === 1 ? 1 : -1;
-        const oj = side === 1 ? js.OFF_JB : js.OFF_JA;
-        const u0 = (2 * v0 + side * m) * bs;
-        const g0 = side * gs;
-        const b0 = kk1 * node;
-        const im = bi[b0];
-        const si = iso[node];
-        for (let r = 0; r < m; r += 1) {
-          const base = (first + r) * RS;
-          const gr = g0 + r * bs;
-          for (let d = 0; d < n; d += 1) {
-            const x = sg * rows[base + d];
-            G[gr + d] = x;
-            U[u0 + d * m + r] = x * im;
-          }
-          for (let a = 0; a < k; a += 1) G[gr + n + a] = sg * rows[base + oj + a];
-          if (si >= 0) {
-            for (let a = 0; a < k; a += 1) U[u0 + (n + a) * m + r] = si * G[gr + n + a];
-            continue;
-          }
-          for (let a = 0; a < k; a += 1) {
-            let sum = 0;
-            for (let b = 0; b < k; b += 1) sum += bi[b0 + 1 + a * k + b] * G[gr + n + b];
-            U[u0 + (n + a) * m + r] = sum;
-          }
-        }
-        // A_pp += G U, its upper triangle (all the LDLᵀ reads).
-        for (let r = 0; r < m; r += 1) {
-          const gr = g0 + r * bs;
-          for (let c = r; c < m; c += 1) {
-            let sum = 0;
-            for (let e = 0; e < bs; e += 1) sum += G[gr + e] * U[u0 + e * m + c];
-            Dm[d0 + r * m + c] += sum;
-          }
-        }
+        if (node >= 0) sideBlock(js, j, side, node, k, bi, iso, G, side * gs, U, (2 * v0 + side * m) * bs, Dm, d0);
       }
       let big = 0;
       for (let r = 0; r < m; r += 1) if (Dm[d0 + r * m + r] > big) big = Dm[d0 + r * m + r];
@@ -723,7 +601,7 @@ export class JointChain {
             off[c0 + r * mp + c] = sum;
             L[c0 + r * mp + c] = sum;
           }
-          this.ldlSolve(this.dOff[p - 1], mp, this.vOff[p - 1], L, c0 + r * mp);
+          ldlSolve(Dm, this.dOff[p - 1], mp, this.rd, this.vOff[p - 1], L, c0 + r * mp);
         }
         for (let r = 0; r < m; r += 1) {
           let cut = 0;
@@ -738,95 +616,9 @@ export class JointChain {
       } else {
         for (let r = 0; r < m; r += 1) this.size[r] = big;
       }
-      if (this.ldlFactor(d0, m, v0) === 0) return 0;
+      if (ldlFactor(Dm, d0, m, this.rd, v0, this.size) === 0) return 0;
     }
     return 1;
-  }
-
-  /**
-   * The LDLᵀ of the symmetric m × m block at Dinv[d0] (its upper triangle is read): L_rj into the
-   * lower triangle, 1 / d_j into rd[r0 + j], 0 for a dropped pivot (within ±CHAIN_TOLERANCE of
-   * `size`[j] plus the terms that cancelled in it). Returns 0 when a pivot is below minus that.
-   * (The sizes are a field, not arguments: a double passed to a call that is not inlined is
-   * boxed, an allocation per call.)
-   */
-  private ldlFactor(d0: number, m: number, r0: number): number {
-    const A = this.Dinv;
-    const rd = this.rd;
-    for (let j = 0; j < m; j += 1) {
-      let d = A[d0 + j * m + j];
-      let size = this.size[j];
-      for (let q = 0; q < j; q += 1) {
-        const l = A[d0 + j * m + q];
-        const t = l * l * rd[r0 + q];
-        d -= t;
-        size += t;
-      }
-      const tol = size * CHAIN_TOLERANCE;
-      if (!(d > tol)) {
-        // Not clearly positive: below −tol (or NaN) the block is not semi-definite; within ±tol a
-        // redundant row, dropped (1 / d := 0, its column of L zero).
-        if (!(d >= -tol)) return 0;
-        rd[r0 + j] = 0;
-        for (let r = j + 1; r < m; r += 1) A[d0 + r * m + j] = 0;
-        continue;
-      }
-      rd[r0 + j] = d;
-      for (let r = j + 1; r < m; r += 1) {
-        let sum = A[d0 + j * m + r];
-        for (let q = 0; q < j; q += 1) sum -= A[d0 + r * m + q] * A[d0 + j * m + q] * rd[r0 + q];
-        A[d0 + r * m + j] = sum / d;
-      }
-    }
-    for (let j = 0; j < m; j += 1) if (rd[r0 + j] !== 0) rd[r0 + j] = 1 / rd[r0 + j];
-    return 1;
-  }
-
-  /** x ← D⁻¹ x (D⁺: a dropped pivot's 1 / d_j is 0) for the LDLᵀ at Dinv[d0] (m × m, 1 / d_j at rd[r0]), x the m entries at X[x0]. */
-  private ldlSolve(d0: number, m: number, r0: number, X: Float64Array, x0: number): void {
-    const A = this.Dinv;
-    const rd = this.rd;
-    for (let r = 1; r < m; r += 1) {
-      let sum = X[x0 + r];
-      for (let q = 0; q < r; q += 1) sum -= A[d0 + r * m + q] * X[x0 + q];
-      X[x0 + r] = sum;
-    }
-    for (let r = m - 1; r >= 0; r -= 1) {
-      let sum = X[x0 + r] * rd[r0 + r];
-      for (let q = r + 1; q < m; q += 1) sum -= A[d0 + q * m + r] * X[x0 + q];
-      X[x0 + r] = sum;
-    }
-  }
-
-  /**
-   * The inverse of the symmetric positive definite k × k in K (destroyed) into out[o..o + k²], by
-   * its Cholesky factor (K = C Cᵀ, C in K's lower triangle): column by column.
-   */
-  private invertSpd(K: Float64Array, k: number, out: Float64Array, o: number): void {
-    for (let j = 0; j < k; j += 1) {
-      let d = K[j * k + j];
-      for (let q = 0; q < j; q += 1) d -= K[j * k + q] * K[j * k + q];
-      const c = Math.sqrt(d);
-      K[j * k + j] = c;
-      for (let r = j + 1; r < k; r += 1) {
-        let sum = K[r * k + j];
-        for (let q = 0; q < j; q += 1) sum -= K[r * k + q] * K[j * k + q];
-        K[r * k + j] = sum / c;
-      }
-    }
-    for (let col = 0; col < k; col += 1) {
-      // C y = e_col, then Cᵀ x = y, into column `col` of out.
-      for (let r = 0; r < k; r += 1) {
-        let sum = r === col ? 1 : 0;
-        for (let q = 0; q < r; q += 1) sum -= K[r * k + q] * out[o + q * k + col];
-        out[o + r * k + col] = sum / K[r * k + r];
-      }
-      for (let r = k - 1; r >= 0; r -= 1) {
-        let sum = out[o + r * k + col];
-        for (let q = r + 1; q < k; q += 1) sum -= K[q * k + r] * out[o + q * k + col];
-        out[o + r * k + col] = sum / K[r * k + r];
-      }
-    }
   }
 
   /** `solve` for joints of any width. */
@@ -852,7 +644,7 @@ export class JointChain {
       }
     }
     // w = D⁻¹ z.
-    for (let p = 0; p < P; p += 1) this.ldlSolve(this.dOff[p], vOff[p + 1] - vOff[p], vOff[p], x, vOff[p]);
+    for (let p = 0; p < P; p += 1) ldlSolve(this.Dinv, this.dOff[p], vOff[p + 1] - vOff[p], this.rd, vOff[p], x, vOff[p]);
     // Lᵀ x = w.
     for (let p = P - 1; p >= 1; p -= 1) {
       if (link[p] === 0) continue;
@@ -868,23 +660,6 @@ export class JointChain {
       }
     }
     // Δv = M̃⁻¹ Jᵀ Δλ per body.
-    const acc = this.acc;
-    for (let q = 0; q < bs * bodyNodes; q += 1) acc[q] = 0;
-    const U = this.U;
-    for (let p = 0; p < P; p += 1) {
-      const v = vOff[p];
-      const m = vOff[p + 1] - v;
-      for (let side = 0; side < 2; side += 1) {
-        const node = this.sNode[2 * p + side];
-        if (node < 0) continue;
-        const u0 = (2 * v + side * m) * bs;
-        const a0 = bs * node;
-        for (let e = 0; e < bs; e += 1) {
-          let sum = 0;
-          for (let r = 0; r < m; r += 1) sum += U[u0 + e * m + r] * x[v + r];
-          acc[a0 + e] += sum;
-        }
-      }
-    }
+    bodyChanges(this.acc, bodyNodes, bs, P, vOff, this.sNode, this.U, x);
   }
 }

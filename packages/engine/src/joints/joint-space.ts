@@ -19,11 +19,9 @@
 import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
-import { addGeometricLoad, type ForestLinks } from './joint-chain.js';
+import type { ForestLinks } from './joint-chain.js';
+import { bodyChanges, bodyInverses, gatherLoads, ldlFactor, ldlSolve, sideBlock } from './joint-blocks.js';
 import type { JointSolver } from './joint-solver.js';
-
-/** A pivot of D_p within this fraction of its size is a redundant row's (as `JointChain`'s). */
-const TREE_TOLERANCE = 1e-8;
 
 /**
  * The branching joint forests in joint space, built by `JointTree.build` when the forest is not
@@ -85,12 +83,12 @@ export class JointSpaceTree {
   vec = new Float64Array(48);
   /** The scale of the geometric stiffness for the next `factor`. */
   stiffness = 0;
-  private readonly n: number;
+  /** Angular components of a body (k = n(n − 1)/2). */
   private readonly k: number;
+  /** n + k: the velocity size of a body (the stride of `acc`). */
   readonly bs: number;
 
   constructor(D: Dims) {
-    this.n = D.n;
     this.k = D.k;
     this.bs = D.n + D.k;
   }
@@ -244,40 +242,15 @@ export class JointSpaceTree {
    */
   factor(js: JointSolver, sb: SolverBodies, bodyNodes: number, nRef: Int32Array): number {
     const P = this.count;
-    const { n, k, bs } = this;
-    const kk1 = 1 + k * k;
+    const { k, bs } = this;
     const stiffness = this.stiffness;
-    const rows = js.rows;
-    const RS = js.RS;
     const bi = this.bodyInv;
     const g = this.bodyG;
-    for (let i = 0; i < bodyNodes; i += 1) g[i] = 0;
-    if (stiffness > 0) {
-      for (let p = 0; p < P; p += 1) {
-        const j = this.pJoint[p];
-        if (this.sNode[2 * p] >= 0) addGeometricLoad(js, j, js.jA[j], g, this.sNode[2 * p]);
-        if (this.sNode[2 * p + 1] >= 0) addGeometricLoad(js, j, js.jB[j], g, this.sNode[2 * p + 1]);
-      }
-    }
+    gatherLoads(js, P, this.pJoint, this.sNode, g, bodyNodes, stiffness > 0 ? 1 : 0);
+    // The stiffness scaled in here, not passed: a double argument is boxed (see joint-blocks.ts).
+    for (let i = 0; i < bodyNodes; i += 1) g[i] *= stiffness;
     const iso = this.bodyIso;
-    for (let i = 0; i < bodyNodes; i += 1) {
-      const slot = nRef[i];
-      const o = kk1 * i;
-      bi[o] = sb.invMass[slot];
-      const gi = g[i] * stiffness;
-      const s = sb.isoInvInertia[slot];
-      iso[i] = s > 0 ? (gi > 0 ? 1 / (sb.inertia[slot * k * k] + gi) : s) : -1;
-      if (s > 0) continue;
-      if (gi > 0) {
-        const K = this.kblk;
-        for (let q = 0, at = slot * k * k; q < k * k; q += 1) K[q] = sb.inertia[at + q];
-        for (let a = 0; a < k; a += 1) K[a * k + a] += gi;
-        invertSpd(K, k, bi, o + 1);
-      } else {
-        const II = sb.invInertia;
-        for (let q = 0, at = slot * k * k; q < k * k; q += 1) bi[o + 1 + q] = II[at + q];
-      }
-    }
+    bodyInverses(sb, nRef, bodyNodes, k, g, bi, iso, this.kblk);
     const U = this.U;
     const G = this.G;
     const Dm = this.Dm;
@@ -287,7 +260,6 @@ export class JointSpaceTree {
     // G, U per side, A_pp.
     for (let p = 0; p < P; p += 1) {
       const j = this.pJoint[p];
-      const first = js.jFirst[j];
       const m = js.jBlock[j];
       const v0 = this.vOff[p];
       const d0 = this.dOff[p];
@@ -295,40 +267,7 @@ export class JointSpaceTree {
       for (let r = 0; r < m; r += 1) cut[v0 + r] = 0;
       for (let side = 0; side < 2; side += 1) {
         const node = this.sNode[2 * p + side];
-        if (node < 0) continue;
-        const sg = side === 1 ? 1 : -1;
-        const oj = side === 1 ? js.OFF_JB : js.OFF_JA;
-        const u0 = (2 * v0 + side * m) * bs;
-        const b0 = kk1 * node;
-        const im = bi[b0];
-        const si = iso[node];
-        for (let r = 0; r < m; r += 1) {
-          const base = (first + r) * RS;
-          const gr = u0 + r * bs;
-          for (let d = 0; d < n; d += 1) {
-            const x = sg * rows[base + d];
-            G[gr + d] = x;
-            U[u0 + d * m + r] = x * im;
-          }
-          for (let a = 0; a < k; a += 1) G[gr + n + a] = sg * rows[base + oj + a];
-          if (si >= 0) {
-            for (let a = 0; a < k; a += 1) U[u0 + (n + a) * m + r] = si * G[gr + n + a];
-            continue;
-          }
-          for (let a = 0; a < k; a += 1) {
-            let sum = 0;
-            for (let b = 0; b < k; b += 1) sum += bi[b0 + 1 + a * k + b] * G[gr + n + b];
-            U[u0 + (n + a) * m + r] = sum;
-          }
-        }
-        for (let r = 0; r < m; r += 1) {
-          const gr = u0 + r * bs;
-          for (let c = r; c < m; c += 1) {
-            let sum = 0;
-            for (let e = 0; e < bs; e += 1) sum += G[gr + e] * U[u0 + e * m + c];
-            Dm[d0 + r * m + c] += sum;
-          }
-        }
+        if (node >= 0) sideBlock(js, j, side, node, k, bi, iso, G, (2 * v0 + side * m) * bs, U, (2 * v0 + side * m) * bs, Dm, d0);
       }
       let big = 0;
       for (let r = 0; r < m; r += 1) if (Dm[d0 + r * m + r] > big) big = Dm[d0 + r * m + r];
@@ -361,7 +300,7 @@ export class JointSpaceTree {
       const m = this.vOff[p + 1] - this.vOff[p];
       const v0 = this.vOff[p];
       for (let r = 0; r < m; r += 1) this.size[r] = this.big[p] + cut[v0 + r];
-      if (this.ldlFactor(this.dOff[p], m, v0) === 0) return 0;
+      if (ldlFactor(this.Dm, this.dOff[p], m, this.rd, v0, this.size) === 0) return 0;
       const b = this.pUp[p];
       const e0 = bStart[b] + this.pIdx[p] + 1;
       const e1 = bStart[b + 1];
@@ -371,7 +310,7 @@ export class JointSpaceTree {
         const mq = this.vOff[q + 1] - this.vOff[q];
         for (let r = 0; r < mq; r += 1) {
           for (let c = 0; c < m; c += 1) L[o + r * m + c] = S[o + r * m + c];
-          this.ldlSolve(this.dOff[p], m, v0, L, o + r * m);
+          ldlSolve(this.Dm, this.dOff[p], m, this.rd, v0, L, o + r * m);
         }
         o += mq * m;
       }
@@ -414,53 +353,6 @@ export class JointSpaceTree {
     return 1;
   }
 
-  /** The LDLᵀ of the m × m block at Dm[d0] (as `JointChain`'s `ldlFactor`). */
-  private ldlFactor(d0: number, m: number, r0: number): number {
-    const A = this.Dm;
-    const rd = this.rd;
-    for (let j = 0; j < m; j += 1) {
-      let d = A[d0 + j * m + j];
-      let size = this.size[j];
-      for (let q = 0; q < j; q += 1) {
-        const l = A[d0 + j * m + q];
-        const t = l * l * rd[r0 + q];
-        d -= t;
-        size += t;
-      }
-      const tol = size * TREE_TOLERANCE;
-      if (!(d > tol)) {
-        if (!(d >= -tol)) return 0;
-        rd[r0 + j] = 0;
-        for (let r = j + 1; r < m; r += 1) A[d0 + r * m + j] = 0;
-        continue;
-      }
-      rd[r0 + j] = d;
-      for (let r = j + 1; r < m; r += 1) {
-        let sum = A[d0 + j * m + r];
-        for (let q = 0; q < j; q += 1) sum -= A[d0 + r * m + q] * A[d0 + j * m + q] * rd[r0 + q];
-        A[d0 + r * m + j] = sum / d;
-      }
-    }
-    for (let j = 0; j < m; j += 1) if (rd[r0 + j] !== 0) rd[r0 + j] = 1 / rd[r0 + j];
-    return 1;
-  }
-
-  /** x ← D⁺ x for the LDLᵀ at Dm[d0] (m × m, 1 / d_j at rd[r0]), x the m entries at X[x0]. */
-  private ldlSolve(d0: number, m: number, r0: number, X: Float64Array, x0: number): void {
-    const A = this.Dm;
-    const rd = this.rd;
-    for (let r = 1; r < m; r += 1) {
-      let sum = X[x0 + r];
-      for (let q = 0; q < r; q += 1) sum -= A[d0 + r * m + q] * X[x0 + q];
-      X[x0 + r] = sum;
-    }
-    for (let r = m - 1; r >= 0; r -= 1) {
-      let sum = X[x0 + r] * rd[r0 + r];
-      for (let q = r + 1; q < m; q += 1) sum -= A[d0 + q * m + r] * X[x0 + q];
-      X[x0 + r] = sum;
-    }
-  }
-
   /**
    * Solves A Δλ = c with c in `vec`, leaving Δλ there, and sums each body node's M̃⁻¹ Jᵀ Δλ into
    * `acc` (bs per body node).
@@ -491,7 +383,7 @@ export class JointSpaceTree {
       }
     }
     // w = D⁺ z.
-    for (let p = 0; p < P; p += 1) this.ldlSolve(this.dOff[p], vOff[p + 1] - vOff[p], vOff[p], x, vOff[p]);
+    for (let p = 0; p < P; p += 1) ldlSolve(this.Dm, this.dOff[p], vOff[p + 1] - vOff[p], this.rd, vOff[p], x, vOff[p]);
     // Lᵀ x = w.
     for (let p = P - 1; p >= 0; p -= 1) {
       const v = vOff[p];
@@ -511,53 +403,6 @@ export class JointSpaceTree {
       }
     }
     // Δv = M̃⁻¹ Jᵀ Δλ per body.
-    const acc = this.acc;
-    for (let q = 0; q < bs * bodyNodes; q += 1) acc[q] = 0;
-    const U = this.U;
-    for (let p = 0; p < P; p += 1) {
-      const v = vOff[p];
-      const m = vOff[p + 1] - v;
-      for (let side = 0; side < 2; side += 1) {
-        const node = this.sNode[2 * p + side];
-        if (node < 0) continue;
-        const u0 = (2 * v + side * m) * bs;
-        const a0 = bs * node;
-        for (let e = 0; e < bs; e += 1) {
-          let sum = 0;
-          for (let r = 0; r < m; r += 1) sum += U[u0 + e * m + r] * x[v + r];
-          acc[a0 + e] += sum;
-        }
-      }
-    }
-  }
-}
-
-/**
- * The inverse of the symmetric positive definite k × k in K (destroyed) into out[o..o + k²], by its
- * Cholesky factor, column by column.
- */
-function invertSpd(K: Float64Array, k: number, out: Float64Array, o: number): void {
-  for (let j = 0; j < k; j += 1) {
-    let d = K[j * k + j];
-    for (let q = 0; q < j; q += 1) d -= K[j * k + q] * K[j * k + q];
-    const c = Math.sqrt(d);
-    K[j * k + j] = c;
-    for (let r = j + 1; r < k; r += 1) {
-      let sum = K[r * k + j];
-      for (let q = 0; q < j; q += 1) sum -= K[r * k + q] * K[j * k + q];
-      K[r * k + j] = sum / c;
-    }
-  }
-  for (let col = 0; col < k; col += 1) {
-    for (let r = 0; r < k; r += 1) {
-      let sum = r === col ? 1 : 0;
-      for (let q = 0; q < r; q += 1) sum -= K[r * k + q] * out[o + q * k + col];
-      out[o + r * k + col] = sum / K[r * k + r];
-    }
-    for (let r = k - 1; r >= 0; r -= 1) {
-      let sum = out[o + r * k + col];
-      for (let q = r + 1; q < k; q += 1) sum -= K[q * k + r] * out[o + q * k + col];
-      out[o + r * k + col] = sum / K[r * k + r];
-    }
+    bodyChanges(this.acc, bodyNodes, bs, P, vOff, this.sNode, this.U, x);
   }
 }

@@ -40,7 +40,8 @@
 import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
-import { geometricLoad, JointChain, type ForestLinks } from './joint-chain.js';
+import { geometricLoad } from './joint-blocks.js';
+import { JointChain, type ForestLinks } from './joint-chain.js';
 import { JointSpaceTree } from './joint-space.js';
 import type { JointSolver } from './joint-solver.js';
 
@@ -866,60 +867,52 @@ export class JointTree {
    * factorisation: Δλ from A Δλ = c, each body moved by M̃⁻¹ Jᵀ Δλ, and (velocities) λ += Δλ.
    */
   private chainSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
-    const chain = this.chain;
-    const P = chain.count;
-    const vec = chain.vec;
-    const vOff = chain.vOff;
-    const { n, k, bs } = this;
-    // c for each row (−(Ċ + bias) or target − C), in path order.
-    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, vOff[p], positions, this.rowSpeed);
-    const B = this.bodyNodes;
-    chain.solve(B);
-    const acc = chain.acc;
-    if (positions === 1) {
-      // A projection moves the poses only: its Δλ is no impulse (as the tree's `solvePositions`).
-      const dx = js.pA;
-      const dθ = js.ja;
-      for (let i = 0; i < B; i += 1) {
-        const a0 = bs * i;
-        for (let d = 0; d < n; d += 1) dx[d] = acc[a0 + d];
-        for (let p = 0; p < k; p += 1) dθ[p] = acc[a0 + n + p];
-        js.moveBody(sb.bodies[this.nRef[i]]!, dx, dθ);
-      }
-      return;
-    }
-    const lambda = js.lambdaRow;
-    for (let p = 0; p < P; p += 1) {
-      const j = chain.pJoint[p];
-      const first = js.jFirst[j];
-      const v = vOff[p];
-      for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] += vec[v + r];
-    }
-    const V = sb.v;
-    const W = sb.w;
-    for (let i = 0; i < B; i += 1) {
-      const slot = this.nRef[i];
-      const a0 = bs * i;
-      for (let d = 0; d < n; d += 1) V[slot * n + d] += acc[a0 + d];
-      for (let p = 0; p < k; p += 1) W[slot * k + p] += acc[a0 + n + p];
-    }
+    const c = this.chain;
+    this.spaceRhs(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff);
+    c.solve(this.bodyNodes);
+    this.spaceApply(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff, c.acc);
   }
 
   /**
-   * The solve of `solveVelocities` (`positions` 0) or `solvePositions` (1) by the branching
-   * forest's joint-space factorisation (`chainSolve` for `branch`, kept apart so each call site sees one class): Δλ from A Δλ = c, each body moved by M̃⁻¹ Jᵀ Δλ, and (velocities) λ += Δλ.
+   * `chainSolve` by the branching forest's joint-space factorisation (`branch`): a call site of
+   * its own, so that each sees one class.
    */
   private branchSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
-    const chain = this.branch;
-    const P = chain.count;
-    const vec = chain.vec;
-    const vOff = chain.vOff;
+    const c = this.branch;
+    this.spaceRhs(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff);
+    c.solve(this.bodyNodes);
+    this.spaceApply(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff, c.acc);
+  }
+
+  /** c for each row of a joint-space solve (−(Ċ + bias) or target − C), joint by joint in its order. */
+  private spaceRhs(
+    js: JointSolver,
+    sb: SolverBodies,
+    positions: number,
+    P: number,
+    pJoint: Int32Array,
+    vec: Float64Array,
+    vOff: Int32Array,
+  ): void {
+    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, pJoint[p], vec, vOff[p], positions, this.rowSpeed);
+  }
+
+  /**
+   * What a joint-space solve left (Δλ in `vec`, each body node's M̃⁻¹ Jᵀ Δλ in `acc`) applied: the
+   * bodies moved (`positions` 1), or λ += Δλ and v, ω += the change (0).
+   */
+  private spaceApply(
+    js: JointSolver,
+    sb: SolverBodies,
+    positions: number,
+    P: number,
+    pJoint: Int32Array,
+    vec: Float64Array,
+    vOff: Int32Array,
+    acc: Float64Array,
+  ): void {
     const { n, k, bs } = this;
-    // c for each row (−(Ċ + bias) or target − C), in path order.
-    for (let p = 0; p < P; p += 1) this.rowsRhs(js, sb, chain.pJoint[p], vec, vOff[p], positions, this.rowSpeed);
     const B = this.bodyNodes;
-    chain.solve(B);
-    const acc = chain.acc;
     if (positions === 1) {
       // A projection moves the poses only: its Δλ is no impulse (as the tree's `solvePositions`).
       const dx = js.pA;
@@ -934,7 +927,7 @@ export class JointTree {
     }
     const lambda = js.lambdaRow;
     for (let p = 0; p < P; p += 1) {
-      const j = chain.pJoint[p];
+      const j = pJoint[p];
       const first = js.jFirst[j];
       const v = vOff[p];
       for (let r = 0; r < js.jBlock[j]; r += 1) lambda[first + r] += vec[v + r];

@@ -16,6 +16,7 @@ import type { JointSolver } from './joint-solver.js';
  * A pivot within this fraction of its size (the block's largest diagonal entry plus what
  * cancelled in it: the tree's LDL_TOLERANCE) is a redundant row's, and dropped; below minus it the
  * block is not semi-definite and the factorisation fails.
+ * @internal
  */
 export const BLOCK_TOLERANCE = 1e-8;
 
@@ -63,6 +64,7 @@ export function addGeometricLoad(js: JointSolver, j: number, slot: number, out: 
  * Each body node's Σ|λ||J_angular| over the `count` joints pJoint[0..count) into g (zeroed over
  * `bodyNodes` first; left 0 when `on` is 0: no geometric stiffness asked). sNode holds each
  * joint's two body nodes (−1: none).
+ * @internal
  */
 export function gatherLoads(
   js: JointSolver,
@@ -89,6 +91,7 @@ export function gatherLoads(
  * M̃⁻¹ (k × k) after it, with g[i] (the geometric stiffness, already scaled) on the diagonal of
  * I_world; iso[i] the scalar of that inverse when the inertia is the same in every plane (balls,
  * cubes: k products a row instead of k², and no k × k inverse), else −1. `kblk` is k × k scratch.
+ * @internal
  */
 export function bodyInverses(
   sb: SolverBodies,
@@ -126,6 +129,7 @@ export function bodyInverses(
  * signed Jacobians into G (row r at g0 + r (n + k)) and U = M̃⁻¹ Gᵀ into U[u0] ((n + k) × m,
  * row-major), with the inverses `bodyInverses` left in bi and iso; then G U's upper triangle
  * added to the m × m block at Dm[d0].
+ * @internal
  */
 export function sideBlock(
   js: JointSolver,
@@ -187,6 +191,7 @@ export function sideBlock(
  * Each body node's M̃⁻¹ Jᵀ Δλ into acc (n + k per body node, zeroed over `bodyNodes` first): joint p's
  * Δλ at x[vOff[p]], its sides' U (`sideBlock`) at U[(2 vOff[p] + side · m_p)(n + k)], its body
  * nodes in sNode[2p], sNode[2p + 1] (−1: none).
+ * @internal
  */
 export function bodyChanges(
   acc: Float64Array,
@@ -221,6 +226,7 @@ export function bodyChanges(
  * lower triangle, 1 / d_j into rd[r0 + j], 0 for a dropped pivot (within ±BLOCK_TOLERANCE of
  * size[j] plus the terms that cancelled in it; its column of L zero). Returns 0 when a pivot is
  * below minus that (or NaN): the block is not semi-definite.
+ * @internal
  */
 export function ldlFactor(A: Float64Array, d0: number, m: number, rd: Float64Array, r0: number, size: Float64Array): number {
   for (let j = 0; j < m; j += 1) {
@@ -255,6 +261,7 @@ export function ldlFactor(A: Float64Array, d0: number, m: number, rd: Float64Arr
 /**
  * x ← D⁺ x (a dropped pivot's 1 / d_j is 0) for the LDLᵀ `ldlFactor` left at A[d0] (m × m, 1 / d_j
  * at rd[r0]), x the m entries at X[x0].
+ * @internal
  */
 export function ldlSolve(
   A: Float64Array,
@@ -280,6 +287,7 @@ export function ldlSolve(
 /**
  * The inverse of the symmetric positive definite k × k in K (destroyed) into out[o..o + k²], by
  * its Cholesky factor, column by column.
+ * @internal
  */
 export function invertSpd(K: Float64Array, k: number, out: Float64Array, o: number): void {
   for (let j = 0; j < k; j += 1) {

@@ -60,6 +60,11 @@ const ROLE_GS = 0;
 const ROLE_NODE = 1;
 const ROLE_FOLDED = 2;
 
+/** Who solves the forest: the node factorisation in `mat`, or a joint-space solver. */
+const BY_NODES = 0;
+const BY_CHAIN = 1;
+const BY_BRANCH = 2;
+
 /** The forest of the rigid joints of one sub-step and its factorisation. */
 export class JointTree {
   private readonly n: number;
@@ -118,23 +123,21 @@ export class JointTree {
   private lastLen = -1;
   /**
    * 1 while the factorisation of the input recorded in `lastIn` on this forest is held (in
-   * `mat`, in `chain` when `useChain` is 1, in `branch` when 2).
+   * `mat`, `chain` or `branch`, as `factoredBy` says).
    */
   private lastOk = 0;
   /** The joint-space solver of a forest of chains. */
   private readonly chain: JointChain;
   /** The node tables `chain` walks when it builds (pointed at the current arrays then). */
   private readonly links: ForestLinks;
-  /** 1 when the forest is made of chains `chain` takes (set by `build`). */
-  private chainOk = 0;
   /** The joint-space solver of a branching forest (the forests `chain` does not take). */
   private readonly branch: JointSpaceTree;
-  /** 1 when `branch` takes the forest (set by `build`). */
-  private branchOk = 0;
+  /** The joint-space solver that takes the forest (set by `build`): BY_CHAIN, BY_BRANCH, or BY_NODES for none. */
+  private space = BY_NODES;
   /** Count of body nodes (numbered first, 0 … bodyNodes − 1). */
   private bodyNodes = 0;
-  /** 1 when the current factorisation is the chain's, 2 the branching forest's (0: the tree's, in `mat`). */
-  private useChain = 0;
+  /** Whose the current factorisation is: BY_CHAIN, BY_BRANCH, or BY_NODES (the node one, in `mat`). */
+  private factoredBy = BY_NODES;
 
   constructor(D: Dims) {
     this.n = D.n;
@@ -165,8 +168,7 @@ export class JointTree {
     if (this.shapeKey(js, sb) === 1) return this.treeJoints;
     // A new forest: the factorisation `mat` holds is not of it (see `sameInput`).
     this.lastOk = 0;
-    this.chainOk = 0;
-    this.branchOk = 0;
+    this.space = BY_NODES;
     this.role = growInt32(this.role, count);
     this.foldNext = growInt32(this.foldNext, count);
     const slots = sb.count;
@@ -310,8 +312,8 @@ export class JointTree {
     links.adjJoint = this.adjJoint;
     links.fold = this.fold;
     links.foldNext = this.foldNext;
-    this.chainOk = this.chain.build(js, this.role, bodyNodes, links);
-    if (this.chainOk === 0) this.branchOk = this.branch.build(js, this.role, bodyNodes, links);
+    if (this.chain.build(js, this.role, bodyNodes, links) === 1) this.space = BY_CHAIN;
+    else if (this.branch.build(js, this.role, bodyNodes, links) === 1) this.space = BY_BRANCH;
     return this.treeJoints;
   }
 
@@ -483,7 +485,7 @@ export class JointTree {
    * node's mass and world inertia; every tree joint's Jacobian rows and, with a stiffness, its
    * impulses) and returns 1 when all of it equals, bit for bit, what the factorisation `mat`
    * holds was made of, on the same forest: the factorisation is then that of this input (and
-   * `useChain` says whose it is: the same input takes the same path).
+   * `factoredBy` says whose it is: the same input takes the same path).
    * Comparing the sources costs less than assembling the blocks to compare them.
    */
   private sameInput(js: JointSolver, sb: SolverBodies): number {
@@ -590,21 +592,20 @@ export class JointTree {
     // (factoring the same input again gives the same bits).
     if (keep === 1 && this.sameInput(js, sb) === 1) return;
     this.lastOk = keep;
-    if (this.chainOk === 1) {
+    // A joint-space factorisation that fails (a block not semi-definite) leaves it to the nodes.
+    this.factoredBy = BY_NODES;
+    if (this.space === BY_CHAIN) {
       const chain = this.chain;
       chain.stiffness = this.stiffness;
-      this.useChain = chain.factor(js, sb, this.bodyNodes, this.nRef);
+      if (chain.factor(js, sb, this.bodyNodes, this.nRef) === 1) this.factoredBy = BY_CHAIN;
       chain.stiffness = 0;
-      if (this.useChain === 1) return;
-    } else if (this.branchOk === 1) {
+    } else if (this.space === BY_BRANCH) {
       const branch = this.branch;
       branch.stiffness = this.stiffness;
-      this.useChain = 2 * branch.factor(js, sb, this.bodyNodes, this.nRef);
+      if (branch.factor(js, sb, this.bodyNodes, this.nRef) === 1) this.factoredBy = BY_BRANCH;
       branch.stiffness = 0;
-      if (this.useChain === 2) return;
-    } else {
-      this.useChain = 0;
     }
+    if (this.factoredBy !== BY_NODES) return;
     this.assemble(js, sb, this.mat);
     const N = this.nodeCount;
     const order = this.nOrder;
@@ -809,11 +810,11 @@ export class JointTree {
   /** One exact velocity solve of every equality row of the forest (a pass of the solver). */
   solveVelocities(js: JointSolver, sb: SolverBodies): void {
     if (this.treeJoints === 0) return;
-    if (this.useChain === 1) {
+    if (this.factoredBy === BY_CHAIN) {
       this.chainSolve(js, sb, 0);
       return;
     }
-    if (this.useChain === 2) {
+    if (this.factoredBy === BY_BRANCH) {
       this.branchSolve(js, sb, 0);
       return;
     }
@@ -839,11 +840,11 @@ export class JointTree {
    */
   solvePositions(js: JointSolver, sb: SolverBodies): void {
     if (this.treeJoints === 0) return;
-    if (this.useChain === 1) {
+    if (this.factoredBy === BY_CHAIN) {
       this.chainSolve(js, sb, 1);
       return;
     }
-    if (this.useChain === 2) {
+    if (this.factoredBy === BY_BRANCH) {
       this.branchSolve(js, sb, 1);
       return;
     }

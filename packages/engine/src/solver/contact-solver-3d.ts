@@ -91,6 +91,10 @@ export class ContactSolver3 extends ContactSolver {
     }
     const ima = fa * sb.invMass[a];
     const imb = fb * sb.invMass[b];
+    // A body frozen in a shock pass, or the immovable body (slot 0), only ever receives zero
+    // changes: its updates are skipped.
+    const moveA = fa !== 0 && a !== 0;
+    const moveB = fb !== 0 && b !== 0;
     const va = a * 3;
     const vb = b * 3;
     const wa = a * 3;
@@ -165,42 +169,50 @@ export class ContactSolver3 extends ContactSolver {
         if (d1 !== 0) {
           const moved = Math.abs(d1) * K1;
           if (moved > tolerance) change = moved;
-          const la = ima * d1;
-          const lb = imb * d1;
-          vax -= la * patch[t1];
-          vbx += lb * patch[t1];
-          vay -= la * patch[t1 + 1];
-          vby += lb * patch[t1 + 1];
-          vaz -= la * patch[t1 + 2];
-          vbz += lb * patch[t1 + 2];
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[t1 + 9];
-          wb0 += gb * patch[t1 + 12];
-          wa1 -= ga * patch[t1 + 10];
-          wb1 += gb * patch[t1 + 13];
-          wa2 -= ga * patch[t1 + 11];
-          wb2 += gb * patch[t1 + 14];
+          if (moveA) {
+            const la = ima * d1;
+            vax -= la * patch[t1];
+            vay -= la * patch[t1 + 1];
+            vaz -= la * patch[t1 + 2];
+            const ga = fa * d1;
+            wa0 -= ga * patch[t1 + 9];
+            wa1 -= ga * patch[t1 + 10];
+            wa2 -= ga * patch[t1 + 11];
+          }
+          if (moveB) {
+            const lb = imb * d1;
+            vbx += lb * patch[t1];
+            vby += lb * patch[t1 + 1];
+            vbz += lb * patch[t1 + 2];
+            const gb = fb * d1;
+            wb0 += gb * patch[t1 + 12];
+            wb1 += gb * patch[t1 + 13];
+            wb2 += gb * patch[t1 + 14];
+          }
         }
         if (d2 !== 0) {
           const moved = Math.abs(d2) * K2;
           if (moved > tolerance) change = moved;
-          const la = ima * d2;
-          const lb = imb * d2;
-          vax -= la * patch[t2];
-          vbx += lb * patch[t2];
-          vay -= la * patch[t2 + 1];
-          vby += lb * patch[t2 + 1];
-          vaz -= la * patch[t2 + 2];
-          vbz += lb * patch[t2 + 2];
-          const ga = fa * d2;
-          const gb = fb * d2;
-          wa0 -= ga * patch[t2 + 9];
-          wb0 += gb * patch[t2 + 12];
-          wa1 -= ga * patch[t2 + 10];
-          wb1 += gb * patch[t2 + 13];
-          wa2 -= ga * patch[t2 + 11];
-          wb2 += gb * patch[t2 + 14];
+          if (moveA) {
+            const la = ima * d2;
+            vax -= la * patch[t2];
+            vay -= la * patch[t2 + 1];
+            vaz -= la * patch[t2 + 2];
+            const ga = fa * d2;
+            wa0 -= ga * patch[t2 + 9];
+            wa1 -= ga * patch[t2 + 10];
+            wa2 -= ga * patch[t2 + 11];
+          }
+          if (moveB) {
+            const lb = imb * d2;
+            vbx += lb * patch[t2];
+            vby += lb * patch[t2 + 1];
+            vbz += lb * patch[t2 + 2];
+            const gb = fb * d2;
+            wb0 += gb * patch[t2 + 12];
+            wb1 += gb * patch[t2 + 13];
+            wb2 += gb * patch[t2 + 14];
+          }
         }
       }
       if (radius > 0) {
@@ -225,14 +237,18 @@ export class ContactSolver3 extends ContactSolver {
         if (d1 !== 0) {
           const moved = Math.abs(d1) * K1;
           if (moved > tolerance) change = moved;
-          const ga = fa * d1;
-          const gb = fb * d1;
-          wa0 -= ga * patch[w1 + 9];
-          wb0 += gb * patch[w1 + 12];
-          wa1 -= ga * patch[w1 + 10];
-          wb1 += gb * patch[w1 + 13];
-          wa2 -= ga * patch[w1 + 11];
-          wb2 += gb * patch[w1 + 14];
+          if (moveA) {
+            const ga = fa * d1;
+            wa0 -= ga * patch[w1 + 9];
+            wa1 -= ga * patch[w1 + 10];
+            wa2 -= ga * patch[w1 + 11];
+          }
+          if (moveB) {
+            const gb = fb * d1;
+            wb0 += gb * patch[w1 + 12];
+            wb1 += gb * patch[w1 + 13];
+            wb2 += gb * patch[w1 + 14];
+          }
         }
       }
     }
@@ -255,36 +271,43 @@ export class ContactSolver3 extends ContactSolver {
       if (dl === 0) continue;
       const moved = Math.abs(dl) * K;
       if (moved > tolerance) change = moved;
-      const la = ima * dl;
-      const lb = imb * dl;
-      vax -= la * rows[rb];
-      vbx += lb * rows[rb];
-      vay -= la * rows[rb + 1];
-      vby += lb * rows[rb + 1];
-      vaz -= la * rows[rb + 2];
-      vbz += lb * rows[rb + 2];
-      const ga = fa * dl;
-      const gb = fb * dl;
-      wa0 -= ga * rows[rb + 9];
-      wb0 += gb * rows[rb + 12];
-      wa1 -= ga * rows[rb + 10];
-      wb1 += gb * rows[rb + 13];
-      wa2 -= ga * rows[rb + 11];
-      wb2 += gb * rows[rb + 14];
+      if (moveA) {
+        const la = ima * dl;
+        vax -= la * rows[rb];
+        vay -= la * rows[rb + 1];
+        vaz -= la * rows[rb + 2];
+        const ga = fa * dl;
+        wa0 -= ga * rows[rb + 9];
+        wa1 -= ga * rows[rb + 10];
+        wa2 -= ga * rows[rb + 11];
+      }
+      if (moveB) {
+        const lb = imb * dl;
+        vbx += lb * rows[rb];
+        vby += lb * rows[rb + 1];
+        vbz += lb * rows[rb + 2];
+        const gb = fb * dl;
+        wb0 += gb * rows[rb + 12];
+        wb1 += gb * rows[rb + 13];
+        wb2 += gb * rows[rb + 14];
+      }
     }
-    // Slot 0 (the immovable body) only ever receives zero changes; writing them is harmless.
-    V[va] = vax;
-    V[va + 1] = vay;
-    V[va + 2] = vaz;
-    W[wa] = wa0;
-    W[wa + 1] = wa1;
-    W[wa + 2] = wa2;
-    V[vb] = vbx;
-    V[vb + 1] = vby;
-    V[vb + 2] = vbz;
-    W[wb] = wb0;
-    W[wb + 1] = wb1;
-    W[wb + 2] = wb2;
+    if (moveA) {
+      V[va] = vax;
+      V[va + 1] = vay;
+      V[va + 2] = vaz;
+      W[wa] = wa0;
+      W[wa + 1] = wa1;
+      W[wa + 2] = wa2;
+    }
+    if (moveB) {
+      V[vb] = vbx;
+      V[vb + 1] = vby;
+      V[vb + 2] = vbz;
+      W[wb] = wb0;
+      W[wb + 1] = wb1;
+      W[wb + 2] = wb2;
+    }
     if (change > this.constants[SOLVE_CHANGE]) this.constants[SOLVE_CHANGE] = change;
   }
 }

@@ -264,6 +264,12 @@ export class JointSolver {
    * poses: the velocity projection then measures and keeps them instead of building them again.
    */
   private rowsFresh = 0;
+  /**
+   * @internal 1 when the last `pass` had nothing to solve but the tree's equality rows (no scalar
+   * row, no Gauss–Seidel block): with no contact either, the tree's solve was exact and nothing
+   * else moves a velocity, so every further pass would find its velocities unchanged and skip.
+   */
+  treeOnly = 0;
   /** Per solver slot: 1 once `solvePositions` brought the body's pose up to date. */
   private synced = new Int32Array(16);
 
@@ -730,6 +736,7 @@ export class JointSolver {
     const lambda = this.lambdaRow;
     const C = this.vecC;
     const X = this.vecX;
+    let work = 0;
     for (let j = 0; j < this.count; j += 1) {
       const a = this.jA[j];
       const b = this.jB[j];
@@ -741,6 +748,7 @@ export class JointSolver {
         const S = q * RS + this.OFF_S;
         const mass = rows[S];
         if (mass === 0) continue;
+        work = 1;
         this.rowVelocity(sb, q, a, b, C, 0);
         const old = lambda[q];
         let nl = old - mass * rows[S + 2] * (C[0] + rows[S + 1]) - rows[S + 3] * old;
@@ -753,6 +761,7 @@ export class JointSolver {
         this.applyRow(sb, q, a, b);
       }
       if (m === 0 || this.tree.role[j] !== 0) continue;
+      work = 1;
       // The block: K Δ = −(Ċ + bias), soft-scaled.
       for (let r = 0; r < m; r += 1) {
         this.rowVelocity(sb, first + r, a, b, C, r);
@@ -770,6 +779,7 @@ export class JointSolver {
         this.applyRow(sb, q, a, b);
       }
     }
+    this.treeOnly = work === 0 ? 1 : 0;
     if (this.tree.treeJoints > 0 && scalars === 1) this.tree.passVelocities(this, sb);
   }
 

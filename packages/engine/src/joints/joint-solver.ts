@@ -264,6 +264,12 @@ export class JointSolver {
    * poses: the velocity projection then measures and keeps them instead of building them again.
    */
   private rowsFresh = 0;
+  /**
+   * @internal 1 when the last `pass` had nothing to solve but the tree's equality rows (no scalar
+   * row, no Gauss–Seidel block): with no contact either, the tree's solve was exact and nothing
+   * else moves a velocity, so every further pass would find its velocities unchanged and skip.
+   */
+  treeOnly = 0;
   /** Per solver slot: 1 once `solvePositions` brought the body's pose up to date. */
   private synced = new Int32Array(16);
 
@@ -730,6 +736,7 @@ export class JointSolver {
     const lambda = this.lambdaRow;
     const C = this.vecC;
     const X = this.vecX;
+    let work = 0;
     for (let j = 0; j < this.count; j += 1) {
       const a = this.jA[j];
       const b = this.jB[j];
@@ -741,6 +748,7 @@ export class JointSolver {
         const S = q * RS + this.OFF_S;
         const mass = rows[S];
         if (mass === 0) continue;
+        work = 1;
         this.rowVelocity(sb, q, a, b, C, 0);
         const old = lambda[q];
         let nl = old - mass * rows[S + 2] * (C[0] + rows[S + 1]) - rows[S + 3] * old;
@@ -753,6 +761,7 @@ export class JointSolver {
         this.applyRow(sb, q, a, b);
       }
       if (m === 0 || this.tree.role[j] !== 0) continue;
+      work = 1;
       // The block: K Δ = −(Ċ + bias), soft-scaled.
       for (let r = 0; r < m; r += 1) {
         this.rowVelocity(sb, first + r, a, b, C, r);
@@ -770,6 +779,7 @@ export class JointSolver {
         this.applyRow(sb, q, a, b);
       }
     }
+    this.treeOnly = work === 0 ? 1 : 0;
     if (this.tree.treeJoints > 0 && scalars === 1) this.tree.passVelocities(this, sb);
   }
 
@@ -1285,6 +1295,10 @@ export class JointSolver {
    */
   anchors(joint: Joint): void {
     const n = this.n;
+    if (n === 3) {
+      this.anchors3(joint);
+      return;
+    }
     const A = joint.a;
     const M = A.pose!.M;
     const la = joint.anchorA;
@@ -1315,6 +1329,21 @@ export class JointSolver {
   }
 
   /**
+   * `anchors` in 3D, written out: the same products summed in the same order from 0 (so the same
+   * numbers, signed zeros included), without the loops over n.
+   */
+  private anchors3(joint: Joint): void {
+    const B = joint.b;
+    arm3(joint.a.pose!.M, joint.anchorA, joint.a.x, this.armA, this.pA);
+    if (B !== null) arm3(B.pose!.M, joint.anchorB, B.x, this.armB, this.pB);
+    else
+      for (let i = 0; i < 3; i += 1) {
+        this.armB[i] = 0;
+        this.pB[i] = joint.anchorB[i];
+      }
+  }
+
+  /**
    * The n equality rows of a point constraint (keys key0 .. key0 + n − 1) from `anchors`:
    * C = pB − pA along each world axis.
    */
@@ -1337,7 +1366,22 @@ export class JointSolver {
       this.rowKey[row] = key0 + d;
       const rows = this.rows;
       const base = row * RS;
-      if (full) {
+      if (full && n === 3) {
+        // 3D (planes xy, xz, yz; J_A at 3, J_B at 6): the same entries with the planes' axes as
+        // constants, without the loops over n and k.
+        const e0 = d === 0 ? 1 : 0;
+        const e1 = d === 1 ? 1 : 0;
+        const e2 = d === 2 ? 1 : 0;
+        rows[base] = e0;
+        rows[base + 1] = e1;
+        rows[base + 2] = e2;
+        rows[base + 3] = rA[0] * e1 - rA[1] * e0;
+        rows[base + 4] = rA[0] * e2 - rA[2] * e0;
+        rows[base + 5] = rA[1] * e2 - rA[2] * e1;
+        rows[base + 6] = rB[0] * e1 - rB[1] * e0;
+        rows[base + 7] = rB[0] * e2 - rB[2] * e0;
+        rows[base + 8] = rB[1] * e2 - rB[2] * e1;
+      } else if (full) {
         const ja = base + this.OFF_JA;
         const jb = base + this.OFF_JB;
         for (let e = 0; e < n; e += 1) rows[base + e] = e === d ? 1 : 0;
@@ -1456,5 +1500,14 @@ export class JointSolver {
       this.ja[row] = v;
       this.jb[row] = v;
     }
+  }
+}
+
+/** arm = M l and p = x + arm in 3D, each sum from 0 in the order of `anchors` (the same numbers). @internal */
+function arm3(M: Float64Array, l: Float64Array, x: Float64Array, arm: Float64Array, p: Float64Array): void {
+  for (let i = 0; i < 3; i += 1) {
+    const s = 0 + M[3 * i] * l[0] + M[3 * i + 1] * l[1] + M[3 * i + 2] * l[2];
+    arm[i] = s;
+    p[i] = x[i] + s;
   }
 }

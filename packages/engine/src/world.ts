@@ -100,7 +100,8 @@ export interface WorldStats {
   readonly contactPoints: number;
   /**
    * Passes of the velocity solve in the last sub-step: at most `params.iterations` (fewer when the
-   * contacts converged early); 0 when there was nothing to solve.
+   * contacts, or the joints of a sub-step without contacts, converged early); 0 when there was
+   * nothing to solve.
    */
   readonly solverPasses: number;
   /**
@@ -1146,6 +1147,12 @@ export class WorldBase {
       for (let it = 0; it < p.iterations; it += 1) {
         joints.pass(sb);
         if (points > 0) solver.iterate(sb);
+        else if (joints.passChanged() === 0) {
+          // No joint row moved by more than `solverTolerance`: the passes left would not move them
+          // either (with contacts, all passes run).
+          this.solverPasses = it + 1;
+          break;
+        }
       }
       joints.store();
     }

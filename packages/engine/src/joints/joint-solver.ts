@@ -99,7 +99,11 @@ export const SC_TOL = 12;
 const SC_DL = 11;
 /** constraintProjectionTolerance: the linear error at which the position projection stops (m). */
 const SC_DONE = 13;
-const SC_COUNT = 14;
+/** solverTolerance: a pass that changes no row's velocity by more ends the passes (m/s). */
+export const SC_SOLVE_TOL = 14;
+/** 1 when the last `pass` changed some row's velocity by more than SC_SOLVE_TOL, else 0. */
+export const SC_CHANGED = 15;
+const SC_COUNT = 16;
 
 /** Gauss–Seidel passes of the end-of-sub-step velocity projection over the joints outside the tree. */
 const VELOCITY_PROJECTION_PASSES = 3;
@@ -320,6 +324,7 @@ export class JointSolver {
     sc[SC_HERTZ_MAX] = p.constraintHertzRatio / h;
     sc[SC_TOL] = p.constraintTolerance;
     sc[SC_DONE] = p.constraintProjectionTolerance;
+    sc[SC_SOLVE_TOL] = p.solverTolerance;
     const warm = p.useWarmStart;
     this.count = 0;
     this.rowCount = 0;
@@ -723,13 +728,20 @@ export class JointSolver {
     }
   }
 
-  /** One Gauss–Seidel pass over every joint: scalar rows (motor, limits), then the block. */
+  /**
+   * One Gauss–Seidel pass over every joint: scalar rows (motor, limits), then the block; then the
+   * tree's exact solve. Leaves in sc[SC_CHANGED] whether some row's velocity changed by more than
+   * `solverTolerance` (a row moved by |Δλ|·K, K its inverse effective mass; a tree row by its
+   * whole right-hand side): 0 means the velocities are a fixed point of the passes to it.
+   */
   pass(sb: SolverBodies, scalars = 1): void {
     const RS = this.RS;
     const rows = this.rows;
     const lambda = this.lambdaRow;
     const C = this.vecC;
     const X = this.vecX;
+    const tol = this.sc[SC_SOLVE_TOL];
+    let changed = 0;
     for (let j = 0; j < this.count; j += 1) {
       const a = this.jA[j];
       const b = this.jB[j];
@@ -749,6 +761,8 @@ export class JointSolver {
         lambda[q] = nl;
         const dl = nl - old;
         if (dl === 0) continue;
+        // |Δλ|·K > tol, as |Δλ| > tol·m_eff (no division).
+        if (Math.abs(dl) > tol * mass) changed = 1;
         this.sc[SC_DL] = dl;
         this.applyRow(sb, q, a, b);
       }
@@ -766,11 +780,22 @@ export class JointSolver {
         const dl = -rows[S + 2] * X[r] - rows[S + 3] * old;
         lambda[q] = old + dl;
         if (dl === 0) continue;
+        if (Math.abs(dl) > tol * rows[S]) changed = 1;
         this.sc[SC_DL] = dl;
         this.applyRow(sb, q, a, b);
       }
     }
+    this.sc[SC_CHANGED] = changed;
+    // (the tree's solve sets SC_CHANGED when one of its rows moves by more than the tolerance)
     if (this.tree.treeJoints > 0 && scalars === 1) this.tree.passVelocities(this, sb);
+  }
+
+  /**
+   * @internal 1 when the last `pass` changed some row's velocity by more than `solverTolerance`,
+   * else 0 (the world then skips the passes left).
+   */
+  passChanged(): number {
+    return this.sc[SC_CHANGED] === 0 ? 0 : 1;
   }
 
   /**
@@ -1088,7 +1113,11 @@ export class JointSolver {
     }
     let gs = 0;
     for (let j = 0; j < this.count; j += 1) if (this.tree.role[j] === 0 && this.jBlock[j] > 0) gs += 1;
-    if (gs > 0) for (let it = 0; it < VELOCITY_PROJECTION_PASSES; it += 1) this.pass(sb, 0);
+    // Fewer passes once one moves no row by more than `solverTolerance` (see `pass`).
+    for (let it = 0; gs > 0 && it < VELOCITY_PROJECTION_PASSES; it += 1) {
+      this.pass(sb, 0);
+      if (this.sc[SC_CHANGED] === 0) break;
+    }
     // Back to the bodies: v, and L += I (ω − ω_body), ω from L.
     for (let s2 = 1; s2 < sb.count; s2 += 1) {
       const body = sb.bodies[s2]!;

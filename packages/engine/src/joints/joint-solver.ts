@@ -955,9 +955,9 @@ export class JointSolver {
         chord = 0;
       }
       // The Gauss–Seidel joints build their own rows, in full; one whose rows were all within their
-      // rounding floors at this pass's poses is left (a step would only reshuffle that rounding: the
-      // grid's closing joints, which its tree's steps keep at 1e-14 m). The check after the pass
-      // sees every row again.
+      // rounding floors, or within STALL_RESIDUAL, at this pass's poses is left (a step would only
+      // reshuffle that rounding: the grid's closing joints, which its tree's steps keep at 1e-14 m).
+      // The check after the pass sees every row again.
       this.errorsOnly = 0;
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag && this.offFloor(j) === 1) {
@@ -978,7 +978,8 @@ export class JointSolver {
 
   /**
    * 1 when one of joint j's equality rows (just built) is off its target by more than its rounding
-   * floor (`rowFloor`), or j has scalar rows (a limit the projection may push back); else 0.
+   * floor (`rowFloor`) and STALL_RESIDUAL (below which a step cannot shrink it 1/REUSE_RATE-fold),
+   * or j has scalar rows (a limit the projection may push back); else 0.
    */
   private offFloor(j: number): number {
     const first = this.jFirst[j];
@@ -989,7 +990,7 @@ export class JointSolver {
     const ok = this.layoutOk === 1;
     for (let q = first; q < first + m; q += 1) {
       const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
-      if (e > this.rowFloor[q]) return 1;
+      if (e > this.rowFloor[q] && e > STALL_RESIDUAL) return 1;
     }
     return 0;
   }

@@ -108,8 +108,9 @@ export interface Params {
    * Convergence tolerance of the contact solver (m/s, >= 0): when a whole pass changes no contact
    * row's velocity by more than this, the passes left of `iterations` (and of `shockIterations`)
    * are skipped, since they would change the velocities by less still; the inner sweeps of a
-   * shock pass stop the same way. 0 skips only passes that would change nothing at all. See
-   * docs/solver.md, "Early exit".
+   * shock pass stop the same way. The joint passes of a sub-step without contacts stop the same
+   * way when no joint row moves by more (m/s or rad/s). 0 skips only passes that would change
+   * nothing at all. See docs/solver.md, "Early exit", and docs/joints.md.
    */
   readonly solverTolerance: number;
   /**

@@ -100,7 +100,8 @@ export interface WorldStats {
   readonly contactPoints: number;
   /**
    * Passes of the velocity solve in the last sub-step: at most `params.iterations` (fewer when the
-   * contacts converged early); 0 when there was nothing to solve.
+   * contacts, or the joints of a sub-step without contacts, converged early); 0 when there was
+   * nothing to solve.
    */
   readonly solverPasses: number;
   /**
@@ -1146,9 +1147,13 @@ export class WorldBase {
       for (let it = 0; it < p.iterations; it += 1) {
         joints.pass(sb);
         if (points > 0) solver.iterate(sb);
-        // The tree's rows alone and no contact: the first pass met them exactly, the rest would
-        // find every velocity as it left them and change nothing (the same bits).
-        else if (joints.treeOnly === 1) break;
+        else if (joints.treeOnly === 1 || joints.passChanged() === 0) {
+          // No contact, and either the tree's rows alone (the first pass met them exactly; the rest
+          // would find every velocity as it left them: the same bits) or no joint row moved by more
+          // than `solverTolerance`: the passes left would not move them either.
+          this.solverPasses = it + 1;
+          break;
+        }
       }
       joints.store();
     }

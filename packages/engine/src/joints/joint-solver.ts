@@ -99,7 +99,11 @@ export const SC_TOL = 12;
 const SC_DL = 11;
 /** constraintProjectionTolerance: the linear error at which the position projection stops (m). */
 const SC_DONE = 13;
-const SC_COUNT = 14;
+/** solverTolerance: a pass that changes no row's velocity by more ends the passes (m/s). */
+export const SC_SOLVE_TOL = 14;
+/** 1 when the last `pass` changed some row's velocity by more than SC_SOLVE_TOL, else 0. */
+export const SC_CHANGED = 15;
+const SC_COUNT = 16;
 
 /** Gauss–Seidel passes of the end-of-sub-step velocity projection over the joints outside the tree. */
 const VELOCITY_PROJECTION_PASSES = 3;
@@ -326,6 +330,7 @@ export class JointSolver {
     sc[SC_HERTZ_MAX] = p.constraintHertzRatio / h;
     sc[SC_TOL] = p.constraintTolerance;
     sc[SC_DONE] = p.constraintProjectionTolerance;
+    sc[SC_SOLVE_TOL] = p.solverTolerance;
     const warm = p.useWarmStart;
     this.count = 0;
     this.rowCount = 0;
@@ -729,14 +734,21 @@ export class JointSolver {
     }
   }
 
-  /** One Gauss–Seidel pass over every joint: scalar rows (motor, limits), then the block. */
+  /**
+   * One Gauss–Seidel pass over every joint: scalar rows (motor, limits), then the block; then the
+   * tree's exact solve. Leaves in sc[SC_CHANGED] whether some row's velocity changed by more than
+   * `solverTolerance` (a row moved by |Δλ|·K, K its inverse effective mass; a tree row by its
+   * whole right-hand side): 0 means the velocities are a fixed point of the passes to it.
+   */
   pass(sb: SolverBodies, scalars = 1): void {
     const RS = this.RS;
     const rows = this.rows;
     const lambda = this.lambdaRow;
     const C = this.vecC;
     const X = this.vecX;
+    const tol = this.sc[SC_SOLVE_TOL];
     let work = 0;
+    let changed = 0;
     for (let j = 0; j < this.count; j += 1) {
       const a = this.jA[j];
       const b = this.jB[j];
@@ -757,6 +769,8 @@ export class JointSolver {
         lambda[q] = nl;
         const dl = nl - old;
         if (dl === 0) continue;
+        // |Δλ|·K > tol, as |Δλ| > tol·m_eff (no division).
+        if (Math.abs(dl) > tol * mass) changed = 1;
         this.sc[SC_DL] = dl;
         this.applyRow(sb, q, a, b);
       }
@@ -775,12 +789,23 @@ export class JointSolver {
         const dl = -rows[S + 2] * X[r] - rows[S + 3] * old;
         lambda[q] = old + dl;
         if (dl === 0) continue;
+        if (Math.abs(dl) > tol * rows[S]) changed = 1;
         this.sc[SC_DL] = dl;
         this.applyRow(sb, q, a, b);
       }
     }
     this.treeOnly = work === 0 ? 1 : 0;
+    this.sc[SC_CHANGED] = changed;
+    // (the tree's solve sets SC_CHANGED when one of its rows moves by more than the tolerance)
     if (this.tree.treeJoints > 0 && scalars === 1) this.tree.passVelocities(this, sb);
+  }
+
+  /**
+   * @internal 1 when the last `pass` changed some row's velocity by more than `solverTolerance`,
+   * else 0 (the world then skips the passes left).
+   */
+  passChanged(): number {
+    return this.sc[SC_CHANGED] === 0 ? 0 : 1;
   }
 
   /**
@@ -939,10 +964,15 @@ export class JointSolver {
         }
         chord = 0;
       }
-      // The Gauss–Seidel joints build their own rows, in full.
+      // The Gauss–Seidel joints build their own rows, in full; one whose rows were all within their
+      // rounding floors, or within STALL_RESIDUAL, at this pass's poses is left (a step would only
+      // reshuffle that rounding: the grid's closing joints, which its tree's steps keep at 1e-14 m).
+      // The check after the pass sees every row again.
       this.errorsOnly = 0;
       for (let j = 0; j < this.count; j += 1) {
-        if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag) this.projectJoint(sb, j);
+        if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag && this.offFloor(j) === 1) {
+          this.projectJoint(sb, j);
+        }
       }
       // The poses moved: the rows are not theirs any more.
       this.rowsFresh = 0;
@@ -954,6 +984,25 @@ export class JointSolver {
       if (synced[s] === 1 && body.motion === MOTION_DYNAMIC) body.omegaFromMomentum();
     }
     this.projectVelocities(sb);
+  }
+
+  /**
+   * 1 when one of joint j's equality rows (just built) is off its target by more than its rounding
+   * floor (`rowFloor`) and STALL_RESIDUAL (below which a step cannot shrink it 1/REUSE_RATE-fold),
+   * or j has scalar rows (a limit the projection may push back); else 0.
+   */
+  private offFloor(j: number): number {
+    const first = this.jFirst[j];
+    const m = this.jBlock[j];
+    if (this.jRows[j] !== m) return 1;
+    const RS = this.RS;
+    const rows = this.rows;
+    const ok = this.layoutOk === 1;
+    for (let q = first; q < first + m; q += 1) {
+      const e = Math.abs(rows[q * RS + this.OFF_S + 6] - (ok ? this.rowTarget[q] : 0));
+      if (e > this.rowFloor[q] && e > STALL_RESIDUAL) return 1;
+    }
+    return 0;
   }
 
   /**
@@ -1098,7 +1147,11 @@ export class JointSolver {
     }
     let gs = 0;
     for (let j = 0; j < this.count; j += 1) if (this.tree.role[j] === 0 && this.jBlock[j] > 0) gs += 1;
-    if (gs > 0) for (let it = 0; it < VELOCITY_PROJECTION_PASSES; it += 1) this.pass(sb, 0);
+    // Fewer passes once one moves no row by more than `solverTolerance` (see `pass`).
+    for (let it = 0; gs > 0 && it < VELOCITY_PROJECTION_PASSES; it += 1) {
+      this.pass(sb, 0);
+      if (this.sc[SC_CHANGED] === 0) break;
+    }
     // Back to the bodies: v, and L += I (ω − ω_body), ω from L.
     for (let s2 = 1; s2 < sb.count; s2 += 1) {
       const body = sb.bodies[s2]!;

@@ -44,6 +44,7 @@ import { geometricLoad } from './joint-blocks.js';
 import { JointChain, type ForestLinks } from './joint-chain.js';
 import { JointSpaceTree } from './joint-space.js';
 import type { JointSolver } from './joint-solver.js';
+import { SC_CHANGED, SC_SOLVE_TOL } from './joint-solver.js';
 
 /** Relative size below which a pivot of a node block counts as zero. */
 const PIVOT_TOLERANCE = 1e-12;
@@ -818,6 +819,8 @@ export class JointTree {
       this.branchSolve(js, sb, 0);
       return;
     }
+    // (the node fallback does not measure its change: the passes run on)
+    js.sc[SC_CHANGED] = 1;
     this.rhs(js, sb, 0);
     this.solveVec();
     const { n, k } = this;
@@ -870,6 +873,7 @@ export class JointTree {
   private chainSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
     const c = this.chain;
     this.spaceRhs(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff);
+    if (positions === 0) this.changed(js, c.vec, c.vOff[c.count]);
     c.solve(this.bodyNodes);
     this.spaceApply(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff, c.acc);
   }
@@ -881,8 +885,23 @@ export class JointTree {
   private branchSolve(js: JointSolver, sb: SolverBodies, positions: number): void {
     const c = this.branch;
     this.spaceRhs(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff);
+    if (positions === 0) this.changed(js, c.vec, c.vOff[c.count]);
     c.solve(this.bodyNodes);
     this.spaceApply(js, sb, positions, c.count, c.pJoint, c.vec, c.vOff, c.acc);
+  }
+
+  /**
+   * Sets the solver's SC_CHANGED when a velocity solve moves some row by more than
+   * `solverTolerance`: the exact solve changes each row's velocity by its whole c.
+   */
+  private changed(js: JointSolver, vec: Float64Array, count: number): void {
+    const tol = js.sc[SC_SOLVE_TOL];
+    for (let i = 0; i < count; i += 1) {
+      if (Math.abs(vec[i]) > tol) {
+        js.sc[SC_CHANGED] = 1;
+        return;
+      }
+    }
   }
 
   /** c for each row of a joint-space solve (−(Ċ + bias) or target − C), joint by joint in its order. */

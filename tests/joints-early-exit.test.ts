@@ -1,0 +1,107 @@
+/**
+ * Joints: the velocity passes stop early (`Params.solverTolerance`, docs/joints.md "The solver").
+ * In a sub-step without contacts, once a joint pass moves no row's velocity by more than the
+ * tolerance (|Δλ|·K for a Gauss–Seidel row, the whole right-hand side for a row of the tree's
+ * exact solve), the passes left are skipped.
+ *
+ * - A pinned 8 × 8 joint grid (a spanning tree solved directly, the joints that close its cycles
+ *   by Gauss–Seidel blocks): after its first second it runs few passes, its joints stay closed to
+ *   rounding, and it ends within 1e-9 m of the grid that runs every pass (tolerance 0).
+ * - A chain of 10 (a path, no cycle): two passes a sub-step (the exact solve, then one that moves
+ *   nothing), the same bits as tolerance 0, which runs the same two.
+ * - A joint and a contact in the same sub-step: every pass runs.
+ */
+import { describe, expect, it } from 'vitest';
+import { Body, HyperSphere, PointJoint } from '@physin/engine';
+import type { World } from '@physin/engine';
+import { addGround, makeWorld, run } from './support/scenes.js';
+import { pointJointScene, snapshot } from './support/joints.js';
+import type { JointScene, PointJointSpec } from './support/joints.js';
+
+function pinnedGrid(side: number, solverTolerance: number): JointScene {
+  const world = makeWorld(3, { solverTolerance });
+  const D = world.D;
+  const shape = HyperSphere(D, 0.25);
+  const bodies: Body[] = [];
+  for (let row = 0; row < side; row += 1)
+    for (let col = 0; col < side; col += 1) bodies.push(world.addBody(new Body(D, { shape, mass: 1, position: [col, 0, row] })));
+  const joints: PointJointSpec[] = [];
+  for (let col = 0; col < side; col += 1) joints.push([bodies[col]!, [0, 0, 0], null, [col, 0, 0]]);
+  for (let row = 0; row < side; row += 1)
+    for (let col = 0; col < side; col += 1) {
+      const at = bodies[row * side + col]!;
+      if (col + 1 < side) joints.push([at, [0.5, 0, 0], bodies[row * side + col + 1]!, [-0.5, 0, 0]]);
+      if (row + 1 < side) joints.push([at, [0, 0, 0.5], bodies[(row + 1) * side + col]!, [0, 0, -0.5]]);
+    }
+  return pointJointScene(world, bodies, joints);
+}
+
+function chain(solverTolerance: number): World {
+  const world = makeWorld(3, { solverTolerance });
+  const D = world.D;
+  const shape = HyperSphere(D, 0.1);
+  let prev: Body | null = null;
+  for (let i = 0; i < 10; i += 1) {
+    const body = world.addBody(new Body(D, { shape, mass: 1, position: [i + 0.5, 0, 0] }));
+    world.addConstraint(new PointJoint(body, prev, [-0.5, 0, 0], prev === null ? [0, 0, 0] : [0.5, 0, 0]));
+    prev = body;
+  }
+  return world;
+}
+
+describe('solverTolerance: the joint passes stop once they move nothing', () => {
+  it('a pinned 8 × 8 grid: few passes after its first second, joints closed, within 1e-9 m of every pass', () => {
+    const fast = pinnedGrid(8, 1e-9);
+    const full = pinnedGrid(8, 0);
+    let most = 0;
+    let fewest = Infinity;
+    let worst = 0;
+    let lowest = 0;
+    run(fast.world, 180, 1 / 60, (s) => {
+      worst = Math.max(worst, fast.error());
+      lowest = Math.min(lowest, fast.bodies[63]!.x[1]!);
+      if (s <= 60) return;
+      most = Math.max(most, fast.world.stats.solverPasses);
+      fewest = Math.min(fewest, fast.world.stats.solverPasses);
+    });
+    let passes = 0;
+    run(full.world, 180, 1 / 60, () => (passes = Math.max(passes, full.world.stats.solverPasses)));
+    let apart = 0;
+    for (let i = 0; i < fast.bodies.length; i += 1) {
+      const a = fast.bodies[i]!.x;
+      const b = full.bodies[i]!.x;
+      for (let d = 0; d < 3; d += 1) apart = Math.max(apart, Math.abs(a[d]! - b[d]!));
+    }
+    console.log(
+      `pinned 8 × 8 grid: passes ${fewest}–${most} (tolerance 0: up to ${passes}), worst joint error ` +
+        `${worst.toExponential(2)} m, ${apart.toExponential(2)} m from every pass, corner down to ${lowest.toFixed(2)} m`,
+    );
+    expect(fewest).toBeLessThanOrEqual(3);
+    expect(most).toBeLessThan(10);
+    expect(worst).toBeLessThan(1e-9);
+    expect(apart).toBeLessThan(1e-9);
+    // The grid swung down (its far corner 7 m from the pinned row).
+    expect(lowest).toBeLessThan(-6);
+  });
+
+  it('a chain of 10: two passes a sub-step, the same bits as tolerance 0', () => {
+    const fast = chain(1e-9);
+    const full = chain(0);
+    run(fast, 120, 1 / 60, () => expect(fast.stats.solverPasses).toBe(2));
+    run(full, 120);
+    expect(snapshot(fast)).toEqual(snapshot(full));
+  });
+
+  it('a joint and a contact in one sub-step: every pass runs', () => {
+    const world = makeWorld(3, { solverTolerance: 1e-9 });
+    addGround(world);
+    const D = world.D;
+    const shape = HyperSphere(D, 0.5);
+    const a = world.addBody(new Body(D, { shape, mass: 1, position: [0, 0.5, 0] }));
+    const b = world.addBody(new Body(D, { shape, mass: 1, position: [1.5, 0.5, 0] }));
+    world.addConstraint(new PointJoint(a, b, [0.75, 0, 0], [-0.75, 0, 0]));
+    run(world, 60);
+    expect(world.stats.contactPoints).toBeGreaterThan(0);
+    expect(world.stats.solverPasses).toBe(world.params.iterations);
+  });
+});

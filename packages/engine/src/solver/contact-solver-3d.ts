@@ -109,13 +109,13 @@ export class ContactSolver3 extends ContactSolver {
       // column of L is zero and its Δλ 0.
       for (let j = 0; j < nr; j += 1) {
         const kjj = K[j * BLOCK_ROWS + j];
-        const lj = lo + (j * (j - 1)) / 2;
+        const lj = lo + ((j * (j - 1)) >> 1);
         let djj = kjj;
         for (let k = 0; k < j; k += 1) djj -= LD[lj + k] * LD[lj + k] * LD[lo + 21 + k];
         const keep = djj > BLOCK_PIVOT * kjj;
         LD[lo + 21 + j] = keep ? djj : 0;
         for (let i = j + 1; i < nr; i += 1) {
-          const li = lo + (i * (i - 1)) / 2;
+          const li = lo + ((i * (i - 1)) >> 1);
           let s = 0;
           if (keep) {
             s = K[i * BLOCK_ROWS + j];
@@ -153,7 +153,7 @@ export class ContactSolver3 extends ContactSolver {
         (src[base + 8] * wb2 - src[base + 5] * wa2);
       // Forward substitution as the right-hand side is formed.
       let y = r < nf ? -v : target[first + r - nf] - v;
-      const lr = lo + (r * (r - 1)) / 2;
+      const lr = lo + ((r * (r - 1)) >> 1);
       for (let k = 0; k < r; k += 1) y -= LD[lr + k] * X[k];
       X[r] = y;
     }
@@ -161,17 +161,21 @@ export class ContactSolver3 extends ContactSolver {
       const d = LD[lo + 21 + i];
       X[i] = d > 0 ? X[i] / d : 0;
     }
-    for (let i = nr - 1; i >= 0; i -= 1) for (let k = i + 1; k < nr; k += 1) X[i] -= LD[lo + (k * (k - 1)) / 2 + i] * X[k];
+    for (let i = nr - 1; i >= 0; i -= 1) for (let k = i + 1; k < nr; k += 1) X[i] -= LD[lo + ((k * (k - 1)) >> 1) + i] * X[k];
     // A redundant normal row leaves one impulse free (K ν = 0): where the solve left a point
     // pulling, the smallest shift along ν that makes every normal impulse ≥ 0, if one does.
     let free = -1;
-    for (let r = nf; r < nr; r += 1) if (LD[lo + 21 + r] === 0) free = r;
-    if (free >= 0) {
+    let pulling = false;
+    for (let r = nf; r < nr; r += 1) {
+      if (LD[lo + 21 + r] === 0) free = r;
+      if (lambdaN[first + r - nf] + X[r] < 0) pulling = true;
+    }
+    if (free >= 0 && pulling) {
       let lowT = -Infinity;
       let highT = Infinity;
       for (let i = nr - 1; i >= 0; i -= 1) {
         let nu = i === free ? 1 : 0;
-        if (i < free) for (let k = i + 1; k <= free; k += 1) nu -= LD[lo + (k * (k - 1)) / 2 + i] * this.blockNu[k];
+        if (i < free) for (let k = i + 1; k <= free; k += 1) nu -= LD[lo + ((k * (k - 1)) >> 1) + i] * this.blockNu[k];
         this.blockNu[i] = nu;
         if (i >= nf && nu !== 0) {
           const t = -(lambdaN[first + i - nf] + X[i]) / nu;

@@ -917,6 +917,10 @@ export class ContactSolverND extends ContactSolver3 {
       if (da < db) fa = 0;
       else if (db < da) fb = 0;
     }
+    // n = 3: the tall stack's block solve, as the written-out solve does.
+    const moveA = fa !== 0 && a !== 0;
+    const moveB = fb !== 0 && b !== 0;
+    if (shock && n === 3 && moveA !== moveB && this.tallShock && this.solveBlock(sb, mf, moveA ? a : b, moveB)) return;
     const ima = fa * sb.invMass[a];
     const imb = fb * sb.invMass[b];
     const va = a * n;

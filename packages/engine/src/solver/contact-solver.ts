@@ -130,6 +130,8 @@ export abstract class ContactSolver {
   protected keptN = new Float64Array(16);
   /** Whether the kept* arrays hold this sub-step's shock impulses. */
   protected shocked = false;
+  /** Whether this sub-step's shock passes are those of a tall stack (see TALL_LAYERS). */
+  protected tallShock = false;
 
   /** Points of this sub-step. */
   protected cpCount = 0;
@@ -721,6 +723,7 @@ export abstract class ContactSolver {
       this.shockOrder[at] = mf;
       this.shockUpper[at] = mfUpper[mf];
     }
+    this.tallShock = maxDepth >= TALL_LAYERS;
     if (maxDepth < TALL_LAYERS) {
       for (let it = 0; it < passes; it += 1) if (this.shockPass(sb, SHOCK_INNER_SWEEPS)) return;
       return;

@@ -41,10 +41,11 @@ export interface Point3Path {
 let point3Path: Point3Path | null = null;
 
 /**
- * Installs the written-out path for point joints in 3D (called once by PointJoint's module).
+ * Installs the written-out path for point joints in 3D (called once by PointJoint's module; null
+ * takes it out, for the tests). Read by the next `build`.
  * @internal
  */
-export function setPoint3Path(path: Point3Path): void {
+export function setPoint3Path(path: Point3Path | null): void {
   point3Path = path;
 }
 

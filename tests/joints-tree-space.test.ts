@@ -24,6 +24,8 @@ import { FixedJoint, HingeJoint, PointJoint } from '@physin/engine';
 import { jointTree, lockedAngleError, pointJointError, runJointScene, snapshot } from './support/joints.js';
 import type { JointMaker, JointRun, JointTreeScene } from './support/joints.js';
 import { randomUnitVector, seeded } from './support/random.js';
+import { setPoint3Path } from '../packages/engine/src/joints/joint-space.js';
+import { usePoint3Path } from '../packages/engine/src/joints/joint-space-point.js';
 
 const DT = 1 / 60;
 const LOG = process.env.TREE_SPACE_LOG === '1';
@@ -166,6 +168,42 @@ describe('joint trees in joint space', () => {
     report('ragdoll kicked', r);
     expect(r.point).toBeLessThan(5e-14); // 1.42e-14 (main's tree: 1.42e-14)
     expect(r.angle).toBeLessThan(1e-14); // 3.4e-15 (main's tree: 3.43e-15)
+  });
+
+  it('the written-out path of point joints in 3D gives the bits of the general path', () => {
+    // The pinned Y and a 4 × 4 grid of point joints pinned along one side (joint-space-point.ts).
+    const grid = (): Scene => {
+      const points: number[][] = [];
+      const edges: [number, number][] = [];
+      const pins: [number, number[]][] = [];
+      for (let r = 0; r < 4; r += 1)
+        for (let c = 0; c < 4; c += 1) {
+          const i = points.push([c, 0, r]) - 1;
+          if (c > 0) edges.push([i - 1, i]);
+          if (r > 0) edges.push([i - 4, i]);
+          if (r === 0) pins.push([i, [c, 0, -0.5]]);
+        }
+      const s = jointTree(points, edges, pins, (_i, a, la, b, lb) => new PointJoint(a, b, la, lb));
+      return { ...s, free: s.joints.map(() => null) };
+    };
+    const kickedY = (): Scene => {
+      const s = yTree(3);
+      s.bodies[2]!.v[2] = 3;
+      s.bodies[5]!.v[0] = -2;
+      return s;
+    };
+    for (const m of [() => yTree(3), kickedY, grid]) {
+      const a = m();
+      run(a, 120);
+      setPoint3Path(null);
+      try {
+        const b = m();
+        run(b, 120);
+        expect(snapshot(a.world)).toEqual(snapshot(b.world));
+      } finally {
+        usePoint3Path();
+      }
+    }
   });
 
   it('every scene gives the same bits in two runs', () => {

@@ -24,6 +24,32 @@ import { bodyChanges, bodyInverses, gatherLoads, ldlFactor, ldlSolve, sideBlock 
 import type { JointSolver } from './joint-solver.js';
 
 /**
+ * `JointSpaceTree`'s solve written out for point joints in 3D (joint-space-point.ts): the same
+ * products in the same order, so the same bits. PointJoint's module installs it, so a scene
+ * without point joints does not carry its code.
+ * @internal
+ */
+export interface Point3Path {
+  /** `sideBlock` for a 3-row joint on a 6-velocity body. */
+  side(t: JointSpaceTree, js: JointSolver, j: number, side: number, node: number, g0: number, d0: number): void;
+  /** `factor`'s couplings and elimination; 1, or 0 when a pivot block fails. */
+  factor(t: JointSpaceTree): number;
+  /** `solve`. */
+  solve(t: JointSpaceTree, bodyNodes: number): void;
+}
+
+let point3Path: Point3Path | null = null;
+
+/**
+ * Installs the written-out path for point joints in 3D (called once by PointJoint's module; null
+ * takes it out, for the tests). Read by the next `build`.
+ * @internal
+ */
+export function setPoint3Path(path: Point3Path | null): void {
+  point3Path = path;
+}
+
+/**
  * The branching joint forests in joint space, built by `JointTree.build` when the forest is not
  * made of chains, factored and solved in its place.
  * @internal
@@ -36,43 +62,43 @@ export class JointSpaceTree {
   /** Per position: its first entry in `vec`; P + 1 entries. */
   vOff = new Int32Array(17);
   /** Per position and side (2p + side): the body node, −1 for none. */
-  private sNode = new Int32Array(32);
+  sNode = new Int32Array(32);
   /** Per position: its upper body node (the parent body; a folded joint's own body). */
-  private pUp = new Int32Array(16);
+  pUp = new Int32Array(16);
   /** Per position: its index in its upper body's list. */
-  private pIdx = new Int32Array(16);
+  pIdx = new Int32Array(16);
   /** Per position: the offset of its blocks to the later joints at its upper body in `S` and `L`. */
-  private lOff = new Int32Array(16);
+  lOff = new Int32Array(16);
   /** Per position: the offset of its m_p × m_p block in `Dm`. */
   private dOff = new Int32Array(16);
   /** Per position: the largest diagonal entry of A_pp. */
-  private big = new Float64Array(16);
+  big = new Float64Array(16);
   /** Per body node: the start of its joints (positions, increasing) in `bj`; bodies + 1 entries. */
-  private bStart = new Int32Array(17);
+  bStart = new Int32Array(17);
   /** Per entry: a position at the body, and that joint's side (0: A, 1: B) there. */
-  private bj = new Int32Array(32);
-  private bjSide = new Int32Array(32);
+  bj = new Int32Array(32);
+  bjSide = new Int32Array(32);
   /** Scratch of `build`: fill counts per body, BFS queue, parents, visited. */
   private bFill = new Int32Array(16);
   private queue = new Int32Array(16);
   private parentJ = new Int32Array(16);
   private visited = new Int32Array(16);
   /** M̃⁻¹ Gᵀ and G per position and side (bs × m_p and m_p × bs, row-major). */
-  private U = new Float64Array(64);
-  private G = new Float64Array(64);
+  U = new Float64Array(64);
+  G = new Float64Array(64);
   /** The coupling blocks S_qp (m_q × m_p), updated, and L_qp = S_qp D_p⁺. */
-  private S = new Float64Array(64);
-  private L = new Float64Array(64);
+  S = new Float64Array(64);
+  L = new Float64Array(64);
   /** The diagonal blocks, factored in place (L in the lower triangle). */
-  private Dm = new Float64Array(64);
+  Dm = new Float64Array(64);
   /** Per entry of `vec`: 1 / d_j (0 dropped), and what cancelled in its row's pivot. */
-  private rd = new Float64Array(48);
-  private cut = new Float64Array(48);
+  rd = new Float64Array(48);
+  cut = new Float64Array(48);
   /** The sizes of the pivots of the block `ldlFactor` factors. */
-  private size = new Float64Array(6);
+  size = new Float64Array(6);
   /** Per body node: 1/m then the angular M̃⁻¹ (k × k); its scalar when isotropic, else −1. */
-  private bodyInv = new Float64Array(16 * 10);
-  private bodyIso = new Float64Array(16);
+  bodyInv = new Float64Array(16 * 10);
+  bodyIso = new Float64Array(16);
   /** Per body node: Σ|λ||J_angular| over its joints. */
   private bodyG = new Float64Array(16);
   /** A body's M̃ angular block being inverted. */
@@ -83,6 +109,8 @@ export class JointSpaceTree {
   vec = new Float64Array(48);
   /** The scale of the geometric stiffness for the next `factor`. */
   stiffness = 0;
+  /** Every joint 3 rows and every body 6 velocities (point joints in 3D), and the path installed. */
+  private point3 = false;
   /** Angular components of a body (k = n(n − 1)/2). */
   private readonly k: number;
   /** n + k: the velocity size of a body (the stride of `acc`). */
@@ -103,11 +131,14 @@ export class JointSpaceTree {
     const count = js.count;
     let tree = 0;
     let mMax = 0;
+    let mMin = 1 << 30;
     for (let j = 0; j < count; j += 1) {
       if (role[j] === 0) continue;
       if (js.jBlock[j] > mMax) mMax = js.jBlock[j];
+      if (js.jBlock[j] < mMin) mMin = js.jBlock[j];
       tree += 1;
     }
+    this.point3 = point3Path !== null && this.bs === 6 && mMin === 3 && mMax === 3;
     const B = bodyNodes;
     this.pJoint = growInt32(this.pJoint, tree, 0);
     this.vOff = growInt32(this.vOff, tree + 1, 0);
@@ -267,12 +298,15 @@ export class JointSpaceTree {
       for (let r = 0; r < m; r += 1) cut[v0 + r] = 0;
       for (let side = 0; side < 2; side += 1) {
         const node = this.sNode[2 * p + side];
-        if (node >= 0) sideBlock(js, j, side, node, k, bi, iso, G, (2 * v0 + side * m) * bs, U, (2 * v0 + side * m) * bs, Dm, d0);
+        if (node < 0) continue;
+        if (this.point3) point3Path!.side(this, js, j, side, node, (2 * v0 + side * m) * bs, d0);
+        else sideBlock(js, j, side, node, k, bi, iso, G, (2 * v0 + side * m) * bs, U, (2 * v0 + side * m) * bs, Dm, d0);
       }
       let big = 0;
       for (let r = 0; r < m; r += 1) if (Dm[d0 + r * m + r] > big) big = Dm[d0 + r * m + r];
       this.big[p] = big;
     }
+    if (this.point3) return point3Path!.factor(this);
     // The couplings S_qp = G_q,b U_p,b to the later joints q at p's upper body b.
     const bStart = this.bStart;
     for (let p = 0; p < P; p += 1) {
@@ -358,6 +392,10 @@ export class JointSpaceTree {
    * `acc` (bs per body node).
    */
   solve(bodyNodes: number): void {
+    if (this.point3) {
+      point3Path!.solve(this, bodyNodes);
+      return;
+    }
     const P = this.count;
     const bs = this.bs;
     const x = this.vec;

@@ -9,6 +9,7 @@ import { currentAnchors, distance } from './frames.js';
 import { Joint } from './joint.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
+import { usePoint3Path } from './joint-space-point.js';
 import { registerJointClass } from '../snapshot/registry.js';
 
 /**
@@ -48,3 +49,6 @@ export class PointJoint extends Joint {
 
 // World snapshots rebuild saved joints of this type with this class (snapshot/registry.ts).
 registerJointClass('point', PointJoint);
+// The joint-space trees of point joints in 3D take the written-out path; a scene without point
+// joints does not carry it (tests/bundle-size.test.ts).
+usePoint3Path();

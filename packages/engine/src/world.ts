@@ -1115,7 +1115,9 @@ export class WorldBase {
 
   /**
    * Stage 4: the contact and joint solver of this sub-step. Contacts are prepared first, then the
-   * joints (which give their bodies solver slots); warm start joints then contacts; in each of the
+   * joints (which give their bodies solver slots); with contacts and a joint tree, the contacts are
+   * prepared again with the tree's stiffened inertia (JointSolver.stiffenInertia, restored before
+   * the write-back); warm start joints then contacts; in each of the
    * `iterations` passes the joints, then the contacts; shock propagation and restitution (contacts
    * only); the impulses are stored (joints: loads and breaking) and v, L written back.
    */
@@ -1131,6 +1133,8 @@ export class WorldBase {
     // joints.count): a world whose last joint was removed hung in its next step.
     if (joints !== null && this.jointList.length === 0) joints.count = 0;
     const jointCount = joints !== null && this.jointList.length > 0 ? joints.prepare(this.jointList, sb, this.constants, p) : 0;
+    // Contacts in the passes of a tree's joints: both solve with the tree's stiffened inertia.
+    if (points > 0 && jointCount > 0 && joints!.stiffenInertia(sb) > 0) solver.prepare(view, sb, this.constants, p);
     this.solverPasses = 0;
     if (joints === null || jointCount === 0) {
       if (joints !== null) joints.brokenCount = 0;
@@ -1162,6 +1166,7 @@ export class WorldBase {
       solver.restitution(sb);
       solver.store(view);
     }
+    if (joints !== null) joints.restoreInertia(sb);
     sb.writeBack();
   }
 

@@ -38,6 +38,7 @@ import { STEP_H } from '../integrator/step-constants.js';
 import type { Params } from '../params.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
 import { bivectorRotationInto, reverseInto } from './frames.js';
+import { addGeometricLoad, invertSpd } from './joint-blocks.js';
 import { JointTree } from './joint-tree.js';
 import type { Joint } from './joint.js';
 import {
@@ -256,6 +257,14 @@ export class JointSolver {
   private layoutRows = -1;
   /** 1 while the tree holds the prepare's factorisation of this sub-step (the velocity passes keep it). */
   private prepTree = 0;
+  /** Per solver slot: h·Σ|λ||J_angular| over its tree joints (scratch of `stiffenInertia`). */
+  private slotLoad = new Float64Array(16);
+  /** The slots `stiffenInertia` changed, and their inverse inertia before ((k² + 1) each: I⁻¹, then the scalar). */
+  private stiffSlots = new Int32Array(16);
+  private stiffSaved = new Float64Array(16);
+  private stiffCount = 0;
+  /** k × k scratch of `stiffenInertia`. */
+  private readonly stiffBlk: Float64Array;
   /**
    * What `rigidResidual` measured: [0] the largest |C − target| of the rigid equality rows, [1]
    * that of their angular rows alone, [2] the largest |C − target| / `rowFloor` (at most 1: every
@@ -306,6 +315,7 @@ export class JointSolver {
     this.rotB = new Float64Array(k * k);
     this.G = new Float64Array(k * k);
     this.gA = new Float64Array(k * k);
+    this.stiffBlk = new Float64Array(k * k);
     this.tree = new JointTree(D);
     this.vecC = new Float64Array(n + k + 4);
     this.vecX = new Float64Array(n + k + 4);
@@ -370,6 +380,87 @@ export class JointSolver {
     this.saveLayout();
     this.prepTree = inTree > 0 ? 1 : 0;
     return this.count;
+  }
+
+  /**
+   * @internal Gives the solver bodies of the tree the inertia the tree's velocity solve uses: I_world
+   * plus the geometric stiffness h·Σ|λ||J_angular| on the diagonal (see `JointTree.stiffness`), so
+   * that the contacts (prepared again by the world) and the Gauss–Seidel rows solved in the same
+   * passes see the same inverse inertia M̃⁻¹ as the tree. Each row's update is then a projection
+   * in one metric, which no sequence of passes can make grow. With two metrics (the tree in M̃,
+   * the contacts in M) the alternating passes are not a contraction: a 4D chain of 10 whipping
+   * onto a floor gained energy every sub-step until it overflowed (docs/joints.md, "Contacts and
+   * the geometric stiffness"). Call after `prepare`, before the warm start; `restoreInertia`
+   * undoes it before the velocities are written back. Returns the count of slots changed.
+   */
+  stiffenInertia(sb: SolverBodies): number {
+    this.stiffCount = 0;
+    if (this.prepTree === 0) return 0;
+    const k = this.k;
+    const kk = k * k;
+    const h = this.sc[SC_H];
+    if (this.slotLoad.length < sb.count) this.slotLoad = growFloat64(this.slotLoad, sb.count);
+    const g = this.slotLoad;
+    g.fill(0, 0, sb.count);
+    const role = this.tree.role;
+    const im = sb.invMass;
+    for (let j = 0; j < this.count; j += 1) {
+      if (role[j] === 0) continue;
+      const a = this.jA[j];
+      const b = this.jB[j];
+      if (im[a] > 0) addGeometricLoad(this, j, a, g, a);
+      if (im[b] > 0) addGeometricLoad(this, j, b, g, b);
+    }
+    for (let s = 1; s < sb.count; s += 1) {
+      const gi = g[s] * h;
+      if (!(gi > 0)) continue;
+      const c = this.stiffCount;
+      this.stiffCount = c + 1;
+      if (c >= this.stiffSlots.length) this.stiffSlots = growInt32(this.stiffSlots, c + 1);
+      if ((c + 1) * (kk + 1) > this.stiffSaved.length) this.stiffSaved = growFloat64(this.stiffSaved, (c + 1) * (kk + 1));
+      this.stiffSlots[c] = s;
+      const saved = this.stiffSaved;
+      const o = c * (kk + 1);
+      const at = s * kk;
+      for (let q = 0; q < kk; q += 1) saved[o + q] = sb.invInertia[at + q];
+      const iso = sb.isoInvInertia[s];
+      saved[o + kk] = iso;
+      if (iso > 0) {
+        // Still the same in every plane: 1/(I + g).
+        const ni = 1 / (sb.inertia[at] + gi);
+        sb.isoInvInertia[s] = ni;
+        for (let r = 0; r < k; r += 1) sb.invInertia[at + r * k + r] = ni;
+      } else {
+        const blk = this.stiffBlk;
+        for (let q = 0; q < kk; q += 1) blk[q] = sb.inertia[at + q];
+        for (let r = 0; r < k; r += 1) blk[r * k + r] += gi;
+        invertSpd(blk, k, sb.invInertia, at);
+      }
+    }
+    if (this.stiffCount === 0) return 0;
+    // The scalar and Gauss–Seidel rows of the joints on those bodies in the same metric as the tree.
+    for (let j = 0; j < this.count; j += 1) {
+      const a = this.jA[j];
+      const b = this.jB[j];
+      if (!(g[a] > 0) && !(g[b] > 0)) continue;
+      const gs = role[j] === 0;
+      this.rowMasses(sb, j, gs ? 0 : this.jBlock[j]);
+      if (gs) this.factorBlock(j, this.jFactor[j]);
+    }
+    return this.stiffCount;
+  }
+
+  /** @internal Gives back the slots' own inverse inertia (undoes `stiffenInertia`). */
+  restoreInertia(sb: SolverBodies): void {
+    const kk = this.k * this.k;
+    const saved = this.stiffSaved;
+    for (let c = 0; c < this.stiffCount; c += 1) {
+      const s = this.stiffSlots[c];
+      const o = c * (kk + 1);
+      for (let q = 0; q < kk; q += 1) sb.invInertia[s * kk + q] = saved[o + q];
+      sb.isoInvInertia[s] = saved[o + kk];
+    }
+    this.stiffCount = 0;
   }
 
   private ensureJoints(need: number): void {

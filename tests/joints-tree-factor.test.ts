@@ -16,8 +16,8 @@
 import { describe, expect, it } from 'vitest';
 import { Body, FixedJoint, HyperSphere, PointJoint } from '@physin/engine';
 import { makeWorld } from './support/scenes.js';
-import { pointJointError, pointJointScene, snapshot } from './support/joints.js';
-import type { JointScene, PointJointSpec } from './support/joints.js';
+import { pinnedGrid, pointJointError, snapshot } from './support/joints.js';
+import type { JointScene } from './support/joints.js';
 
 const DT = 1 / 60;
 
@@ -40,24 +40,6 @@ function doubleWeld(): JointScene {
     return worst;
   };
   return { world, bodies, error };
-}
-
-function pinnedGrid(side: number): JointScene {
-  const world = makeWorld(3, {});
-  const D = world.D;
-  const shape = HyperSphere(D, 0.25);
-  const bodies: Body[] = [];
-  for (let row = 0; row < side; row += 1)
-    for (let col = 0; col < side; col += 1) bodies.push(world.addBody(new Body(D, { shape, mass: 1, position: [col, 0, row] })));
-  const joints: PointJointSpec[] = [];
-  for (let col = 0; col < side; col += 1) joints.push([bodies[col]!, [0, 0, 0], null, [col, 0, 0]]);
-  for (let row = 0; row < side; row += 1)
-    for (let col = 0; col < side; col += 1) {
-      const at = bodies[row * side + col]!;
-      if (col + 1 < side) joints.push([at, [0.5, 0, 0], bodies[row * side + col + 1]!, [-0.5, 0, 0]]);
-      if (row + 1 < side) joints.push([at, [0, 0, 0.5], bodies[(row + 1) * side + col]!, [0, 0, -0.5]]);
-    }
-  return pointJointScene(world, bodies, joints);
 }
 
 /** Steps the scene; returns the worst joint error and the lowest height the last body reached. */

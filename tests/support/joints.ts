@@ -114,6 +114,28 @@ export function pointJointScene(world: World, bodies: Body[], joints: PointJoint
   return { world, bodies, error };
 }
 
+/**
+ * A side × side grid of balls (r 0.25, 1 kg, 1 m apart) in the x-z plane of a 3D world, point
+ * joints to the right and +z neighbours, the row z = 0 pinned to the world where it starts.
+ */
+export function pinnedGrid(side: number, params: Partial<Params> = {}): JointScene {
+  const world = makeWorld(3, params);
+  const D = world.D;
+  const shape = HyperSphere(D, 0.25);
+  const bodies: Body[] = [];
+  for (let row = 0; row < side; row += 1)
+    for (let col = 0; col < side; col += 1) bodies.push(world.addBody(new Body(D, { shape, mass: 1, position: [col, 0, row] })));
+  const joints: PointJointSpec[] = [];
+  for (let col = 0; col < side; col += 1) joints.push([bodies[col]!, [0, 0, 0], null, [col, 0, 0]]);
+  for (let row = 0; row < side; row += 1)
+    for (let col = 0; col < side; col += 1) {
+      const at = bodies[row * side + col]!;
+      if (col + 1 < side) joints.push([at, [0.5, 0, 0], bodies[row * side + col + 1]!, [-0.5, 0, 0]]);
+      if (row + 1 < side) joints.push([at, [0, 0, 0.5], bodies[(row + 1) * side + col]!, [0, 0, -0.5]]);
+    }
+  return pointJointScene(world, bodies, joints);
+}
+
 /** Every body's x, R, v, L, w, in world order, in one array (for bit-exact comparisons). */
 export function snapshot(world: World): number[] {
   const out: number[] = [];

@@ -63,12 +63,12 @@ describe('a chain of 10 whipping onto a floor at y = −3 (600 steps at 1/60, th
     const belowBound = lastMass === 1 ? 0.01 : 0.05;
     for (const n of [2, 3, 4, 5, 6]) {
       for (const balls of [0, 5]) {
-        it(`${n}D, last link ${lastMass} kg, ${balls} balls on the floor: finite, joints within 1e-10 m, nothing below the floor by more than ${belowBound} m, no energy gained`, () => {
+        it(`${n}D, last link ${lastMass} kg, ${balls} balls on the floor: finite, joints within 5e-12 m, nothing below the floor by more than ${belowBound} m, no energy gained`, () => {
           const r = whipOntoFloor(n, balls, lastMass);
           const report = `${n}D last ${lastMass} kg, ${balls} balls: worst joint error ${r.worst.toExponential(2)} m, below the floor ${r.below.toExponential(2)} m, energy rise ${r.rise.toExponential(2)} J`;
           console.log(report);
           expect(r.finite, report).toBe(true);
-          expect(r.worst, report).toBeLessThanOrEqual(1e-10);
+          expect(r.worst, report).toBeLessThanOrEqual(5e-12); // worst measured 7.6e-13
           expect(r.below, report).toBeLessThanOrEqual(belowBound);
           expect(r.rise, report).toBeLessThanOrEqual(1e-6);
         });

@@ -24,7 +24,7 @@ import { FixedJoint, HingeJoint, PointJoint } from '@physin/engine';
 import { jointTree, lockedAngleError, pointJointError, runJointScene, snapshot } from './support/joints.js';
 import type { JointMaker, JointRun, JointTreeScene } from './support/joints.js';
 import { randomUnitVector, seeded } from './support/random.js';
-import { setPoint3Path } from '../packages/engine/src/joints/joint-space.js';
+import { installedPoint3Path, setPoint3Path } from '../packages/engine/src/joints/joint-space.js';
 import { usePoint3Path } from '../packages/engine/src/joints/joint-space-point.js';
 
 const DT = 1 / 60;
@@ -195,9 +195,14 @@ describe('joint trees in joint space', () => {
       s.bodies[5]!.v[0] = -2;
       return s;
     };
+    const path = installedPoint3Path()!;
     for (const m of [() => yTree(3), kickedY, grid]) {
+      // The written-out path, counted: it must be the one that ran.
+      let factored = 0;
+      setPoint3Path({ ...path, factor: (t) => ((factored += 1), path.factor(t)) });
       const a = m();
       run(a, 120);
+      expect(factored).toBeGreaterThan(0);
       setPoint3Path(null);
       try {
         const b = m();

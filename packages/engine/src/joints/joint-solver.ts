@@ -342,6 +342,9 @@ export class JointSolver {
     sc[SC_DONE] = p.constraintProjectionTolerance;
     sc[SC_SOLVE_TOL] = p.solverTolerance;
     const warm = p.useWarmStart;
+    // A sub-step that threw between stiffenInertia and restoreInertia leaves nothing to restore
+    // into slots that now hold other bodies.
+    this.stiffCount = 0;
     this.count = 0;
     this.rowCount = 0;
     this.factorSize = 0;
@@ -1056,9 +1059,11 @@ export class JointSolver {
         chord = 0;
       }
       // The Gauss–Seidel joints build their own rows, in full; one whose rows were all within their
-      // rounding floors, or within STALL_RESIDUAL, at this pass's poses is left (a step would only
-      // reshuffle that rounding: the grid's closing joints, which its tree's steps keep at 1e-14 m).
-      // The check after the pass sees every row again.
+      // rounding floors, or within STALL_RESIDUAL, when they were built at the start of this pass
+      // is left (a step would only reshuffle that rounding: the grid's closing joints, which its
+      // tree's steps keep at 1e-14 m). Those rows are from before the tree's step of this pass, so
+      // a joint that step opens is caught by the check after the pass and projected in the next
+      // one; after the last pass it waits for the next sub-step's projection.
       this.errorsOnly = 0;
       for (let j = 0; j < this.count; j += 1) {
         if (this.jSoft[j] === 0 && this.tree.role[j] === 0 && !this.joints[j].brokenFlag && this.offFloor(j) === 1) {

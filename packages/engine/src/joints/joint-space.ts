@@ -50,6 +50,14 @@ export function setPoint3Path(path: Point3Path | null): void {
 }
 
 /**
+ * The written-out path installed, or null (for the tests, which wrap it to see it run).
+ * @internal
+ */
+export function installedPoint3Path(): Point3Path | null {
+  return point3Path;
+}
+
+/**
  * The branching joint forests in joint space, built by `JointTree.build` when the forest is not
  * made of chains, factored and solved in its place.
  * @internal

@@ -486,7 +486,9 @@ describe('the step allocates nothing with compound bodies (built engine, child p
       const r = JSON.parse(out.trim().split('\n').pop()!) as { windows: number[]; contacts: number; events: number };
       expect(r.contacts).toBeGreaterThan(12);
       expect(r.events).toBeGreaterThan(12);
-      expect(Math.min(...r.windows)).toBeLessThan(64 * 1024);
+      // The young generation grows 2-5 KB over 2000 steps here (measured, n = 3 and 4); a
+      // window in which something deoptimises and runs boxed in the interpreter costs 300 KB.
+      expect(Math.min(...r.windows)).toBeLessThan(16 * 1024);
     });
   }
 });

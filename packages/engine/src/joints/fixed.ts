@@ -5,7 +5,7 @@
  * @module
  */
 import type { Body } from '../body.js';
-import { currentAnchors, currentRelative, distance, identityRotor, referenceFrame } from './frames.js';
+import { currentAnchors, currentRelative, distance, identityRotor, referenceFrame, turnAngle } from './frames.js';
 import { Joint } from './joint.js';
 import type { JointOptions } from './joint.js';
 import type { JointSolver } from './joint-solver.js';
@@ -48,8 +48,7 @@ export class FixedJoint extends Joint {
 
   /** The angle (rad) of the relative rotation away from the rest orientation: 2·acos(|⟨Q⟩₀|). */
   override angularError(): number {
-    const Q = currentRelative(this, this.frameA, this.frameB, false);
-    return 2 * Math.acos(Math.min(1, Q[0]!));
+    return turnAngle(currentRelative(this, this.frameA, this.frameB, false));
   }
 
   /** @internal */

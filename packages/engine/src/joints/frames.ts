@@ -165,6 +165,16 @@ export function currentRelative(joint: Joint, CA: Float64Array, CB: Float64Array
   return Q;
 }
 
+/**
+ * The angle (rad) of the turn a unit rotor Q makes, 2·acos|⟨Q⟩₀|, taken as 2·atan2(|Q − ⟨Q⟩₀|, |⟨Q⟩₀|):
+ * the same number, but acos near 1 cannot tell turns below about 2e-8 rad from none.
+ */
+export function turnAngle(Q: Float64Array): number {
+  let s = 0;
+  for (let c = 1; c < Q.length; c += 1) s += Q[c]! * Q[c]!;
+  return 2 * Math.atan2(Math.sqrt(s), Math.abs(Q[0]!));
+}
+
 /** The reference C_B = R_B~ R_A C_A of a joint (R_B = 1 for the world): Q = 1 now. Allocates. */
 export function referenceFrame(joint: Joint, CA: Float64Array): Float64Array {
   const D = joint.D;

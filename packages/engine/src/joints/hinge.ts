@@ -7,7 +7,7 @@
  */
 import { isSimple } from '@physin/algebra';
 import type { Body } from '../body.js';
-import { currentAnchors, currentRelative, distance, planeFrameRotor, referenceFrame } from './frames.js';
+import { currentAnchors, currentRelative, distance, planeFrameRotor, referenceFrame, turnAngle } from './frames.js';
 import { Joint } from './joint.js';
 import { JS_COMMON_COUNT, JS_H } from './joint-slots.js';
 import type { JointOptions } from './joint.js';
@@ -221,7 +221,7 @@ export class HingeJoint extends Joint {
     T[0] = Math.cos(half);
     T[1] = Math.sin(half);
     const Qp = D.kernels.mul(new Float64Array(D.r), Q, T);
-    return 2 * Math.acos(Math.min(1, Math.abs(Qp[0]!)));
+    return turnAngle(Qp);
   }
 
   /** @internal */

@@ -3,13 +3,12 @@
 // listener on each. Run by tests/engine-compound.test.ts as
 //   node --no-concurrent-recompilation --expose-gc --max-semi-space-size=256 --min-semi-space-size=64 \
 //     tests/engine-compound-allocation.mjs N
-// It imports the BUILT engine (dist/) and prints one JSON line: the young generation's growth over
-// each window of STEPS steps, gc() twice before each (see tests/engine-allocation.mjs for the
-// method). Only the young generation counts: what the step allocates lands there, while code the
-// JIT compiles late in a window (100-250 KB, seen in every window on a loaded machine) does not.
-// A window in which a collection ran reports Infinity.
-import { PerformanceObserver } from 'node:perf_hooks';
-import v8 from 'node:v8';
+// It imports the BUILT engine (dist/) and prints one JSON line: the least growth of the young
+// generation over three windows of STEPS steps (tests/support/young-generation.mjs). Only the
+// young generation counts: what the step allocates lands there, while the code the JIT compiles
+// late in a window (100-250 KB of old and code space, seen in every window on a loaded machine)
+// does not.
+import { leastGrowth } from './support/young-generation.mjs';
 
 if (typeof globalThis.gc !== 'function') {
   console.error('engine-compound-allocation.mjs: run node with --expose-gc');
@@ -58,23 +57,9 @@ for (let i = 0; i < 12; i += 1) {
   });
 }
 for (let i = 0; i < 3_000; i += 1) world.step(1 / 60);
-const newSpace = () => v8.getHeapSpaceStatistics().find((s) => s.space_name === 'new_space').space_used_size;
-let collections = 0;
-const observer = new PerformanceObserver((list) => (collections += list.getEntries().length));
-observer.observe({ entryTypes: ['gc'] });
-const windows = [];
-for (let w = 0; w < 5; w += 1) {
-  await new Promise((resolve) => setTimeout(resolve, 20));
-  globalThis.gc();
-  globalThis.gc();
-  // Let the observer deliver the entries of the forced collections before counting.
-  await new Promise((resolve) => setTimeout(resolve, 20));
-  collections = 0;
-  const before = newSpace();
-  for (let i = 0; i < STEPS; i += 1) world.step(1 / 60);
-  const grown = newSpace() - before;
-  await new Promise((resolve) => setTimeout(resolve, 20));
-  windows.push(collections === 0 ? grown : Infinity);
-}
-observer.disconnect();
-console.log(JSON.stringify({ n, steps: STEPS, windows, contacts: world.stats.contacts, events }));
+// Let pending compilation jobs finish before measuring.
+await new Promise((resolve) => setTimeout(resolve, 20));
+const least = leastGrowth((count) => {
+  for (let i = 0; i < count; i += 1) world.step(1 / 60);
+}, STEPS);
+console.log(JSON.stringify({ n, steps: STEPS, least, contacts: world.stats.contacts, events }));

@@ -9,7 +9,7 @@
  * random poses; several margins) for n = 2..6 through the hot-path entry point collideScratch
  * (margin in scratch.scalars[NARROWPHASE_MARGIN]) and through collide (margin as an argument),
  * and takes the bounds of every kind of shape through computeBoundsUnchecked. After a warm-up it
- * measures three windows of about 100 000 calls each: a window with no garbage collection and
+ * measures five windows of about 100 000 calls each: a window with no garbage collection and
  * < 64 KB of new-space growth (the measuring itself costs about 12 KB) allocated less than one heap
  * number (16 B) per 2 000 calls. The JIT may leave old-space objects in a window, so the whole-heap bound applies
  * to the smallest window, and compiled code (a late compile on a loaded machine) is not counted.
@@ -141,7 +141,7 @@ await new Promise((resolve) => setTimeout(resolve, 100));
 for (let w = 0; w < 30; w += 1) pass();
 const PASSES = 30;
 const windows = [];
-for (let w = 0; w < 3; w += 1) {
+for (let w = 0; w < 5; w += 1) {
   globalThis.gc();
   globalThis.gc();
   await new Promise((resolve) => setTimeout(resolve, 50));
@@ -181,6 +181,11 @@ beforeAll(() => {
   const out = execFileSync(
     process.execPath,
     [
+      // Compiled where it is asked for, not by a background job that a loaded machine (the test
+      // files side by side) finishes inside a window: such a job left 100-160 KB of old space in
+      // each of the three windows of a run of the whole suite (the young generation: 12 KB); the
+      // whole-heap check takes the least of five windows.
+      '--no-concurrent-recompilation',
       '--expose-gc',
       '--max-semi-space-size=256',
       '--min-semi-space-size=64',
@@ -199,7 +204,7 @@ describe('narrowphase allocates nothing in steady state (built engine, child pro
     const r = result!;
     expect(r.calls).toBeGreaterThan(90_000);
     expect(r.hits).toBeGreaterThan(0);
-    expect(r.windows.length).toBe(3);
+    expect(r.windows.length).toBe(5);
     for (const w of r.windows) {
       expect(w.collections).toBe(0);
       expect(w.newSpace).toBeLessThan(64 * 1024);

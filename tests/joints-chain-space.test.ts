@@ -80,14 +80,15 @@ describe('chains solved in joint space', () => {
     expect(lowest).toBeLessThan(-2.05);
   });
 
-  it('a taut chain pinned at both ends (a redundant row, dropped): every joint within 4e-5 m over 2 s', () => {
+  it('a taut chain pinned at both ends (a redundant row, dropped): every joint within 8e-5 m over 2 s', () => {
     const scene = tautChain();
     const { worst } = run(scene, 120);
     console.log(`taut chain: worst joint error ${worst.toExponential(2)} m`);
-    // 3.0e-5 m: a taut chain cannot sag without stretching, so the step leaves that much (the tree
-    // factoring these sub-steps: 6.4e-5; the tree alone, before the chains: 1.03 m in 3 s; see
-    // docs/joints.md, "Chains in joint space").
-    expect(worst).toBeLessThan(4e-5);
+    // 6.35e-5 m: a taut chain cannot sag without stretching, so the step leaves that much; its
+    // projection passes do not all shrink the error, so it raises the geometric stiffness of its
+    // factorisations (STIFFEN_GROWTH in joint-solver.ts; 3.0e-5 m before that; the tree alone,
+    // before the chains: 1.03 m in 3 s; see docs/joints.md, "Chains in joint space").
+    expect(worst).toBeLessThan(8e-5);
     for (const b of scene.bodies) for (let i = 0; i < 3; i += 1) expect(Number.isFinite(b.x[i]!)).toBe(true);
   });
 

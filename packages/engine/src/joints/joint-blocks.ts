@@ -15,10 +15,12 @@ import type { JointSolver } from './joint-solver.js';
 /**
  * A pivot within this fraction of its size (the block's largest diagonal entry plus what
  * cancelled in it: the tree's LDL_TOLERANCE) is a redundant row's, and dropped; below minus it the
- * block is not semi-definite and the factorisation fails.
+ * block is not semi-definite and the factorisation fails. A redundant row's pivot is rounding
+ * (about 1e-14 of its size), a genuine row's as small as the inverse of a mass ratio (2.6e-10 in
+ * a chain whose every other link is 10⁸ times heavier, which fell freely at 1e-8).
  * @internal
  */
-export const BLOCK_TOLERANCE = 1e-8;
+export const BLOCK_TOLERANCE = 1e-11;
 
 /** The sum `geometricLoad` returns (0 + x is x, bit for bit). */
 const LOAD = new Float64Array(1);

@@ -52,9 +52,10 @@ const PIVOT_TOLERANCE = 1e-12;
 /**
  * A pivot of the block LDLᵀ whose size is at most this fraction of the block's largest diagonal
  * entry plus the terms that cancelled in it (max|D_ii| + Σ |L_jq² d_q|) is not clearly nonzero,
- * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane).
+ * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane). The
+ * joint-space blocks' BLOCK_TOLERANCE, and why it is not larger.
  */
-const LDL_TOLERANCE = 1e-8;
+const LDL_TOLERANCE = 1e-11;
 
 /** Joint roles in the forest. */
 const ROLE_GS = 0;

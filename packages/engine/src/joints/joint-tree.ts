@@ -53,7 +53,7 @@ const PIVOT_TOLERANCE = 1e-12;
  * A pivot of the block LDLᵀ whose size is at most this fraction of the block's largest diagonal
  * entry plus the terms that cancelled in it (max|D_ii| + Σ |L_jq² d_q|) is not clearly nonzero,
  * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane). The
- * joint-space blocks' BLOCK_TOLERANCE, and why it is not larger.
+ * same as the joint-space blocks' BLOCK_TOLERANCE (joint-blocks.ts says why it is not larger).
  */
 const LDL_TOLERANCE = 1e-11;
 

@@ -95,9 +95,9 @@ async function build() {
  * Bytes a frame, as the slope between windows of `frames / 5` and `frames` frames: the window's
  * fixed cost (the measuring, the JIT) cancels, an allocation per frame does not.
  */
-function measure(label, work) {
-  const short = leastGrowth(work, frames / 5);
-  const long = leastGrowth(work, frames);
+async function measure(label, work) {
+  const short = await leastGrowth(work, frames / 5);
+  const long = await leastGrowth(work, frames);
   return { label, perFrame: (long - short) / (frames - frames / 5), short, long };
 }
 
@@ -122,7 +122,7 @@ for (let i = 0; i < 5; i += 1) {
   sliceFrames(frames / 5);
   await new Promise((resolve) => setTimeout(resolve, 50));
 }
-const out = [measure('report', reportFrames), measure('slice', sliceFrames)];
+const out = [await measure('report', reportFrames), await measure('slice', sliceFrames)];
 let visible = 0;
 scene.traverse((o) => (visible += o.visible ? 1 : 0));
 console.log(JSON.stringify({ frames, bodies: scene.bodyCount, visible, results: out }));

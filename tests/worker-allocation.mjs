@@ -66,8 +66,8 @@ for (const n of [3, 4]) {
     run(steps / 5);
     await new Promise((resolve) => setTimeout(resolve, 50));
   }
-  const short = leastGrowth(run, steps / 5);
-  const long = leastGrowth(run, steps);
+  const short = await leastGrowth(run, steps / 5);
+  const long = await leastGrowth(run, steps);
   results[n] = {
     short,
     long,

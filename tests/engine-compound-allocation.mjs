@@ -57,8 +57,6 @@ for (let i = 0; i < 12; i += 1) {
   });
 }
 for (let i = 0; i < 3_000; i += 1) world.step(1 / 60);
-// Let pending compilation jobs finish before measuring.
-await new Promise((resolve) => setTimeout(resolve, 20));
 const least = await leastGrowth((count) => {
   for (let i = 0; i < count; i += 1) world.step(1 / 60);
 }, STEPS);

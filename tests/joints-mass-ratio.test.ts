@@ -14,36 +14,37 @@
  * redundancy threshold"): measured at most 1.1e-12 m (4D hinges).
  */
 import { describe, expect, it } from 'vitest';
-import { Body, FixedJoint, HingeJoint, HyperBox, PointJoint } from '@physin/engine';
-import type { Joint } from '@physin/engine';
-import { makeWorld } from './support/scenes.js';
+import { FixedJoint, HingeJoint, HyperBox, PointJoint } from '@physin/engine';
+import type { JointMaker } from './support/joints.js';
+import { jointPath } from './support/joints.js';
 
 type Kind = 'point' | 'hinge' | 'weld';
 
+const MAKERS: Record<Kind, JointMaker> = {
+  point: (_i, a, la, b, lb) => new PointJoint(a, b, la, lb),
+  hinge: (_i, a, la, b, lb) => new HingeJoint(a, b, la, lb),
+  weld: (_i, a, la, b, lb) => new FixedJoint(a, b, la, lb),
+};
+
 /** The worst joint error of the chain; `every` makes every other link heavy, not the last alone. */
 function worstError(n: number, kind: Kind, ratio: number, every = false): number {
-  const world = makeWorld(n);
-  const D = world.D;
   const along = (x: number): number[] => {
     const p = new Array<number>(n).fill(0);
     p[0] = x;
     return p;
   };
-  const join = (a: Body, b: Body | null, la: number[], lb: number[]): Joint =>
-    kind === 'point'
-      ? new PointJoint(a, b, la, lb)
-      : kind === 'hinge'
-        ? new HingeJoint(a, b, la, lb)
-        : new FixedJoint(a, b, la, lb);
-  const shape = HyperBox(D, new Array<number>(n).fill(0.2));
-  let previous: Body | null = null;
-  for (let i = 0; i < 8; i += 1) {
-    const link = world.addBody(new Body(D, { shape, mass: (every ? i % 2 === 1 : i === 7) ? ratio : 1, position: along(i) }));
-    world.addConstraint(
-      previous === null ? join(link, null, along(-0.5), along(-0.5)) : join(previous, link, along(0.5), along(-0.5)),
-    );
-    previous = link;
-  }
+  const points = Array.from({ length: 8 }, (_, i) => along(i));
+  const { world } = jointPath(
+    points,
+    along(-0.5),
+    null,
+    MAKERS[kind],
+    {},
+    {
+      shape: (D) => HyperBox(D, new Array<number>(n).fill(0.2)),
+      mass: (i) => ((every ? i % 2 === 1 : i === 7) ? ratio : 1),
+    },
+  );
   let worst = 0;
   for (let s = 0; s < 300; s += 1) {
     world.step(1 / 60);

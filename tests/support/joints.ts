@@ -8,7 +8,7 @@
  */
 import { rotorApplyVector, rotorFromPlane, rotorMul, rotorReverse } from '@physin/algebra';
 import { Body, HyperSphere, PointJoint } from '@physin/engine';
-import type { Dims, Joint, Params, World } from '@physin/engine';
+import type { Dims, Joint, Params, Shape, World } from '@physin/engine';
 import { makeWorld } from './scenes.js';
 
 /** The world position of the body point `local` (body frame): x + R local R~. */
@@ -250,10 +250,17 @@ export interface JointPath {
   joints: Joint[];
 }
 
+/** The links of a `jointPath` other than its 1 kg balls: a shape for all, a mass per link. */
+export interface PathLinks {
+  shape?: (D: Dims) => Shape;
+  mass?: (i: number) => number;
+}
+
 /**
- * Balls of 1 kg at `points` (y up, n = points[0].length), joined at the midpoints between
- * neighbours by `make`, the first and (with `end`) the last joined to the world at `start` and
- * `end`. Every body starts unturned, so each joint's rest relative rotor is the identity.
+ * Balls of 1 kg at `points` (y up, n = points[0].length; other shapes and masses by `links`),
+ * joined at the midpoints between neighbours by `make`, the first and (with `end`) the last joined
+ * to the world at `start` and `end`. Every body starts unturned, so each joint's rest relative
+ * rotor is the identity.
  */
 export function jointPath(
   points: number[][],
@@ -261,11 +268,12 @@ export function jointPath(
   end: number[] | null,
   make: JointMaker,
   params: Partial<Params> = {},
+  links: PathLinks = {},
 ): JointPath {
   const world = makeWorld(points[0]!.length, params);
   const D = world.D;
-  const shape = HyperSphere(D, LINK_RADIUS);
-  const bodies = points.map((p) => world.addBody(new Body(D, { shape, mass: 1, position: p })));
+  const shape = links.shape ? links.shape(D) : HyperSphere(D, LINK_RADIUS);
+  const bodies = points.map((p, i) => world.addBody(new Body(D, { shape, mass: links.mass ? links.mass(i) : 1, position: p })));
   const local = (p: number[], at: number[]): number[] => at.map((v, i) => v - p[i]!);
   const joints: Joint[] = [];
   joints.push(make(0, bodies[0]!, local(points[0]!, start), null, start));

@@ -40,7 +40,7 @@
 import type { Dims } from '@physin/algebra';
 import { growFloat64, growInt32 } from '../contacts/contact-set.js';
 import type { SolverBodies } from '../solver/solver-bodies.js';
-import { geometricLoad } from './joint-blocks.js';
+import { BLOCK_TOLERANCE, geometricLoad } from './joint-blocks.js';
 import { JointChain, type ForestLinks } from './joint-chain.js';
 import { JointSpaceTree } from './joint-space.js';
 import type { JointSolver } from './joint-solver.js';
@@ -52,10 +52,10 @@ const PIVOT_TOLERANCE = 1e-12;
 /**
  * A pivot of the block LDLᵀ whose size is at most this fraction of the block's largest diagonal
  * entry plus the terms that cancelled in it (max|D_ii| + Σ |L_jq² d_q|) is not clearly nonzero,
- * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane). The
- * same as the joint-space blocks' BLOCK_TOLERANCE (joint-blocks.ts says why it is not larger).
+ * and the node falls back to the LU with complete pivoting (redundant rows, a locked plane): the
+ * joint-space blocks' threshold (joint-blocks.ts says why it is not larger).
  */
-const LDL_TOLERANCE = 1e-11;
+const LDL_TOLERANCE = BLOCK_TOLERANCE;
 
 /** Joint roles in the forest. */
 const ROLE_GS = 0;
